@@ -1,0 +1,345 @@
+//! Simple (non-convex) polygon generators.
+
+use core::f64::consts::TAU;
+
+use glam::DVec2;
+
+use super::lattice::{L, W, angle_cmp, cross_l, lattice_convex_xy, to_world};
+use super::rng::SplitMix64;
+use crate::rounding::ldexp;
+
+/// Attempts before a randomized construction gives up.
+const MAX_ATTEMPTS: usize = 10_000;
+
+/// A random star-shaped simple ccw polygon with exactly `n >= 3` vertices,
+/// `spikes` of which (evenly spaced indices) reach 8–32 times further out
+/// than the others, giving deep reflex notches.
+///
+/// Construction: `n` random integer directions sorted by angle, with every
+/// cyclic angular gap in `(0, π)` (checked exactly); vertex `i` is
+/// `λᵢ · uᵢ` with integer `λᵢ`. The fan triangles `(0, vᵢ, vᵢ₊₁)` are then
+/// nondegenerate, ccw and wind once around the origin, which lies in the open
+/// kernel: the polygon is simple by construction. Consecutive vertices may be
+/// collinear. Integer coordinates up to `2^24` scaled by `2^−24`, exact.
+///
+/// # Panics
+/// Panics if `n < 3` or `spikes > n`.
+pub fn star(rng: &mut SplitMix64, n: usize, spikes: usize) -> Vec<DVec2> {
+    assert!(n >= 3, "star: n >= 3");
+    assert!(spikes <= n, "star: spikes <= n");
+    let r: i64 = 1 << 16;
+    for _ in 0..MAX_ATTEMPTS {
+        let mut dirs: Vec<L> = (0..n)
+            .map(|_| (rng.range_i64(-r, r), rng.range_i64(-r, r)))
+            .collect();
+        if dirs.contains(&(0, 0)) {
+            continue;
+        }
+        dirs.sort_by(angle_cmp);
+        if (0..n).any(|i| cross_l(dirs[i], dirs[(i + 1) % n]) <= 0) {
+            continue;
+        }
+        let spike_at = |i: usize| spikes > 0 && (i * spikes) % n < spikes;
+        let pts: Vec<W> = dirs
+            .iter()
+            .enumerate()
+            .map(|(i, &(x, y))| {
+                let lam = if spike_at(i) {
+                    rng.range_i64(128, 256)
+                } else {
+                    rng.range_i64(4, 16)
+                };
+                (i128::from(x * lam), i128::from(y * lam))
+            })
+            .collect();
+        let mut pts = pts;
+        let k = rng.index(n);
+        pts.rotate_left(k);
+        return to_world(&pts, -24);
+    }
+    panic!("star: failed to draw directions");
+}
+
+/// A comb: a spine `[0, W] × [−1, 0]` with `n_teeth` teeth of width 1 and
+/// height `tooth_len` standing on it, separated by gaps of width `space`
+/// (`W = n_teeth + (n_teeth − 1)·space`). Simple, ccw, `4 n_teeth`
+/// vertices, integer coordinates (exact).
+///
+/// # Panics
+/// Panics if `n_teeth`, `tooth_len` or `space` is 0.
+pub fn comb(n_teeth: usize, tooth_len: u32, space: u32) -> Vec<DVec2> {
+    assert!(
+        n_teeth >= 1 && tooth_len >= 1 && space >= 1,
+        "comb: positive sizes"
+    );
+    let pitch = 1.0 + f64::from(space);
+    let len = f64::from(tooth_len);
+    let xl = |i: usize| i as f64 * pitch;
+    let xr = |i: usize| i as f64 * pitch + 1.0;
+    let mut v = vec![DVec2::new(0.0, -1.0), DVec2::new(xr(n_teeth - 1), -1.0)];
+    for i in (0..n_teeth).rev() {
+        if i != n_teeth - 1 {
+            v.push(DVec2::new(xr(i), 0.0));
+        }
+        v.push(DVec2::new(xr(i), len));
+        v.push(DVec2::new(xl(i), len));
+        if i != 0 {
+            v.push(DVec2::new(xl(i), 0.0));
+        }
+    }
+    v
+}
+
+/// Two interlocking combs; see [`interleaved_combs`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct CombPair {
+    /// Lower comb, teeth up: [`comb`]`(n_teeth + 1, tooth_len, 1)`.
+    pub a: Vec<DVec2>,
+    /// Upper comb, `n_teeth` teeth pointing down into the gaps of `a`.
+    pub b: Vec<DVec2>,
+    /// The exact clearance: distance between the combs (0 = touching).
+    pub gap: f64,
+    /// The grid step `u` all coordinates are multiples of; `gap` is a
+    /// multiple of it.
+    pub unit: f64,
+}
+
+/// Grid step for coordinates of magnitude at most `m`: `u = 2^(e−52)` with
+/// `2^e >= m + 1`, so every multiple of `u` below `2^(e+1)` is exact.
+fn unit_for(m: f64) -> f64 {
+    let mut e = 0i32;
+    while ldexp(1.0, e) < m + 1.0 {
+        e += 1;
+    }
+    ldexp(1.0, e - 52)
+}
+
+fn combs_with(n_teeth: usize, tooth_len: u32, g: f64, u: f64) -> CombPair {
+    assert!(
+        (0.0..0.25).contains(&g),
+        "interleaved_combs: gap must be below 0.25"
+    );
+    let a = comb(n_teeth + 1, tooth_len, 1);
+    let len = f64::from(tooth_len);
+    let w = 2.0 * n_teeth as f64 + 1.0;
+    let mut b = vec![
+        DVec2::new(w, len + g + 1.0),
+        DVec2::new(0.0, len + g + 1.0),
+        DVec2::new(0.0, len + g),
+    ];
+    for i in 0..n_teeth {
+        let x0 = 2.0 * i as f64 + 1.0 + g;
+        let x1 = 2.0 * i as f64 + 2.0 - g;
+        b.push(DVec2::new(x0, len + g));
+        b.push(DVec2::new(x0, g));
+        b.push(DVec2::new(x1, g));
+        b.push(DVec2::new(x1, len + g));
+    }
+    b.push(DVec2::new(w, len + g));
+    CombPair {
+        a,
+        b,
+        gap: g,
+        unit: u,
+    }
+}
+
+/// Two combs whose teeth interleave without touching: `a` has
+/// `n_teeth + 1` teeth (width 1, at `x ∈ [2i, 2i+1]`, height `tooth_len`),
+/// `b` has `n_teeth` downward teeth of width `1 − 2·gap` centred in the gaps
+/// of `a`, its teeth tips `gap` above `a`'s spine and its spine `gap` above
+/// `a`'s teeth. Every clearance (tooth side to tooth side, tip to spine) is
+/// exactly `gap`, so the exact distance between the combs is `gap` (many
+/// optimal feature pairs) and they are `Disjoint` (`Touching` for 0).
+///
+/// `gap` is rounded **up** to a multiple of the grid step `u = 2^(e−52)`
+/// (`2^e` just above the largest coordinate), which makes every coordinate
+/// exact; the realised gap is returned in [`CombPair::gap`]. So gaps from
+/// one ulp of the coordinates up to about 0.25 are supported (`1e-9` becomes
+/// the next multiple of `u` above it).
+///
+/// # Panics
+/// Panics if `n_teeth` or `tooth_len` is 0, `gap` is negative or not
+/// finite, or the snapped gap is at least 0.25.
+pub fn interleaved_combs(n_teeth: usize, tooth_len: u32, gap: f64) -> CombPair {
+    assert!(n_teeth >= 1 && tooth_len >= 1, "interleaved_combs: sizes");
+    assert!(gap.is_finite() && gap >= 0.0, "interleaved_combs: gap");
+    let u = unit_for((2.0 * n_teeth as f64 + 2.0).max(f64::from(tooth_len) + 2.0));
+    let e = (u.log2().round()) as i32;
+    let g = ldexp(ldexp(gap, -e).ceil(), e);
+    combs_with(n_teeth, tooth_len, g, u)
+}
+
+/// [`interleaved_combs`] with the gap given as `ulps` grid steps `u`
+/// (`u` = one ulp of the largest coordinates; `ulps = 0` gives touching).
+///
+/// # Panics
+/// As [`interleaved_combs`].
+pub fn interleaved_combs_ulps(n_teeth: usize, tooth_len: u32, ulps: u64) -> CombPair {
+    assert!(n_teeth >= 1 && tooth_len >= 1, "interleaved_combs: sizes");
+    let u = unit_for((2.0 * n_teeth as f64 + 2.0).max(f64::from(tooth_len) + 2.0));
+    assert!(ulps < 1 << 50, "interleaved_combs_ulps: too many ulps");
+    combs_with(n_teeth, tooth_len, ulps as f64 * u, u)
+}
+
+/// A spiral strip: an Archimedean arm of width 1/2 with gap 1/2 between
+/// windings, making `turns` full turns, sampled at `per_turn` equally spaced
+/// angles per turn on both of its sides; `2 (per_turn · turns + 1)` vertices,
+/// ccw.
+///
+/// Simple because both sides are sampled on the same `per_turn` rays (angle
+/// step `< π`), radii on each ray strictly increase across sides and
+/// windings, and in a convex wedge two chords joining the bounding rays at
+/// increasing radii never cross; coordinates are `f64` trigonometry rounded
+/// to the integer lattice (pitch `2^20` lattice units, margins of `2^18`)
+/// then scaled by `2^−20` (exact). Bit-reproducible where `sin`/`cos` are.
+///
+/// # Panics
+/// Panics unless `3 <= per_turn <= 2^16` and `1 <= turns <= 4096`.
+pub fn spiral(per_turn: u32, turns: u32) -> Vec<DVec2> {
+    assert!(
+        (3..=1 << 16).contains(&per_turn) && (1..=4096).contains(&turns),
+        "spiral: sizes"
+    );
+    let pitch = f64::from(1u32 << 20);
+    let k = per_turn * turns;
+    let point = |i: u32, inner: bool| -> W {
+        let theta = TAU * f64::from(i % per_turn) / f64::from(per_turn);
+        let r_in = pitch * (1.0 + f64::from(i) / f64::from(per_turn));
+        let r = if inner { r_in } else { r_in + pitch / 2.0 };
+        (
+            (r * theta.cos()).round() as i128,
+            (r * theta.sin()).round() as i128,
+        )
+    };
+    let mut pts: Vec<W> = (0..=k).map(|i| point(i, false)).collect();
+    pts.extend((0..=k).rev().map(|i| point(i, true)));
+    to_world(&pts, -20)
+}
+
+/// A random simple ccw polygon on `n >= 3` random lattice points in general
+/// position (distinct, no three collinear; coordinates in `[−1, 1]`, exact
+/// multiples of `2^−20`), obtained from a random permutation by 2-opt
+/// untangling: while two non-adjacent edges cross, reverse the chain between
+/// them. Each move strictly shortens the tour, so it terminates; with no
+/// crossing left and general position the polygon is simple. Roughly
+/// `O(n³)`; intended for `n <= 300`.
+///
+/// # Panics
+/// Panics if `n < 3`.
+pub fn two_opt(rng: &mut SplitMix64, n: usize) -> Vec<DVec2> {
+    assert!(n >= 3, "two_opt: n >= 3");
+    let r: i64 = 1 << 20;
+    let mut pts: Vec<L> = Vec::with_capacity(n);
+    while pts.len() < n {
+        let p = (rng.range_i64(-r, r), rng.range_i64(-r, r));
+        let ok = pts.iter().all(|&a| a != p)
+            && (0..pts.len()).all(|i| {
+                (i + 1..pts.len()).all(|j| {
+                    let (a, b) = (pts[i], pts[j]);
+                    cross_l((b.0 - a.0, b.1 - a.1), (p.0 - a.0, p.1 - a.1)) != 0
+                })
+            });
+        if ok {
+            pts.push(p);
+        }
+    }
+    let mut order: Vec<usize> = (0..n).collect();
+    rng.shuffle(&mut order);
+    let crosses = |a: L, b: L, c: L, d: L| -> bool {
+        let o = |p: L, q: L, s: L| cross_l((q.0 - p.0, q.1 - p.1), (s.0 - p.0, s.1 - p.1)).signum();
+        o(a, b, c) * o(a, b, d) < 0 && o(c, d, a) * o(c, d, b) < 0
+    };
+    loop {
+        let mut changed = false;
+        for i in 0..n {
+            for j in i + 2..n {
+                if i == 0 && j == n - 1 {
+                    continue;
+                }
+                let (a, b) = (pts[order[i]], pts[order[i + 1]]);
+                let (c, d) = (pts[order[j]], pts[order[(j + 1) % n]]);
+                if crosses(a, b, c, d) {
+                    order[i + 1..=j].reverse();
+                    changed = true;
+                }
+            }
+        }
+        if !changed {
+            break;
+        }
+    }
+    let mut poly: Vec<W> = order
+        .iter()
+        .map(|&k| (i128::from(pts[k].0), i128::from(pts[k].1)))
+        .collect();
+    let area2: i128 = (0..n)
+        .map(|i| {
+            let (a, b) = (poly[i], poly[(i + 1) % n]);
+            a.0 * b.1 - a.1 * b.0
+        })
+        .sum();
+    if area2 < 0 {
+        poly.reverse();
+    }
+    to_world(&poly, -20)
+}
+
+/// A pocketed polygon with a convex polygon inside its pocket; see
+/// [`pocket_pair`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct PocketPair {
+    /// Simple ccw 8-vertex polygon: a block with a deep rectangular pocket
+    /// open at the top.
+    pub p: Vec<DVec2>,
+    /// Strictly convex ccw polygon inside the pocket (inside the convex hull
+    /// of `p`, outside `p`).
+    pub q: Vec<DVec2>,
+    /// Exact distance between `p` and `q` (the clearance to the pocket's
+    /// walls and floor).
+    pub gap: f64,
+}
+
+/// A polygon `p` with a deep pocket and a tall strictly convex polygon `q`
+/// (`n_q >= 3` vertices) sitting in it without touching: `q`'s leftmost,
+/// rightmost and lowest points are exactly `gap` from the pocket's left wall,
+/// right wall and floor, and its top is below the opening. The exact distance
+/// is `gap` (contact `Disjoint` for `gap > 0`, `Touching` for 0). As for
+/// [`interleaved_combs`], `gap` is rounded up to a multiple of the ulp grid
+/// of the (integer-sized) coordinates so everything is exact; the realised
+/// value is returned.
+///
+/// # Panics
+/// Panics if `n_q < 3` (or is too large for the lattice, about 10^3), or
+/// `gap` is negative, not finite or at least 0.25 after rounding.
+pub fn pocket_pair(rng: &mut SplitMix64, n_q: usize, gap: f64) -> PocketPair {
+    assert!(gap.is_finite() && gap >= 0.0, "pocket_pair: gap");
+    let lat = lattice_convex_xy(rng, n_q, 1 << 10, 1 << 14);
+    let x0 = lat.iter().map(|p| p.0).min().unwrap_or(0);
+    let y0 = lat.iter().map(|p| p.1).min().unwrap_or(0);
+    let lat: Vec<L> = lat.iter().map(|&(x, y)| (x - x0, y - y0)).collect();
+    let wq = lat.iter().map(|p| p.0).max().unwrap_or(0) as f64;
+    let hq = lat.iter().map(|p| p.1).max().unwrap_or(0) as f64;
+    let wall = 1.0 + (hq / 4.0).floor();
+    let u = unit_for(wq.max(hq) + 2.0 * wall + 2.0);
+    let e = (u.log2().round()) as i32;
+    let g = ldexp(ldexp(gap, -e).ceil(), e);
+    assert!(g < 0.25, "pocket_pair: gap must be below 0.25");
+    let (xl, xr, yf) = (-g, wq + g, -g);
+    let (x_out0, x_out1, y_out0, y_top) = (xl - wall, xr + wall, yf - wall, hq + wall);
+    let p = vec![
+        DVec2::new(x_out0, y_out0),
+        DVec2::new(x_out1, y_out0),
+        DVec2::new(x_out1, y_top),
+        DVec2::new(xr, y_top),
+        DVec2::new(xr, yf),
+        DVec2::new(xl, yf),
+        DVec2::new(xl, y_top),
+        DVec2::new(x_out0, y_top),
+    ];
+    let q = lat
+        .iter()
+        .map(|&(x, y)| DVec2::new(x as f64, y as f64))
+        .collect();
+    PocketPair { p, q, gap: g }
+}

@@ -1,0 +1,103 @@
+//! # polydist-oracle — exact reference oracle and hard-input generators
+//!
+//! **For testing only** (`publish = false`, used as a dev-dependency). It is
+//! deliberately independent of `polydist-predicates` and `polydist-polygon`:
+//! it is the reference those crates are checked against.
+//!
+//! ## Exact oracle
+//! Brute force in exact arithmetic. Every finite `f64` is a dyadic rational,
+//! so coordinates are converted exactly ([`rat`]); predicates and squared
+//! distances are computed with big integers on a common power-of-two grid and
+//! returned as [`num_rational::BigRational`]. Costs are the obvious ones
+//! (`O(nm)` for pairs of polygons), fine up to a few hundred vertices.
+//!
+//! * primitives: [`sign_orient`], [`sq_dist_pp`], [`sq_dist_ps`],
+//!   [`sq_dist_ss`], [`segments_intersect`], [`point_in_polygon`];
+//! * shapes: [`is_simple`], [`is_convex`], [`is_strictly_convex`],
+//!   [`signed_area`];
+//! * distances with all optimal feature pairs: [`boundary_distance`],
+//!   [`convex_distance`], [`feature_sq_dist`], [`min_vertex_distance`]
+//!   (see [`ExactDistance`] for the feature-pair convention);
+//! * contact: [`contact_status_convex`] (relative interiors),
+//!   [`contact_status_simple`];
+//! * filled-convex measures: [`sq_dist_point_filled_convex`],
+//!   [`per_vertex_sq_dist`], [`directed_hausdorff_filled`],
+//!   [`hausdorff_filled`], [`cmmr`];
+//! * rounding and error measurement: [`to_f64_nearest`], [`sqrt_nearest`],
+//!   [`step_ulps`], [`ulp_distance`], [`ulps_error`], [`ulps_error_sqrt`].
+//!
+//! **Input convention:** geometric functions panic on non-finite
+//! coordinates (a NaN in a test input is a bug in the test); [`rat`] itself
+//! returns `None` for them.
+//!
+//! ## Generators
+//! Deterministic functions of a [`SplitMix64`] seed (the PRNG is part of this
+//! crate so fixtures stay reproducible). Every generator documents its
+//! guarantee (strict convexity, simplicity, exact vertex count, exact
+//! coordinates, exact gaps), and the crate's tests check each with the
+//! oracle: [`random_convex`], [`random_convex_lattice`], [`cocircular`],
+//! [`cocircular_perturbed`], [`sliver`], [`parallel_facing`],
+//! [`with_gap_ulps`], [`offset`] / [`offset_family`] / [`OFFSETS`], [`collinear_triples`],
+//! [`near_collinear`], [`short_dyadic`], [`star`], [`comb`],
+//! [`interleaved_combs`], [`interleaved_combs_ulps`], [`spiral`],
+//! [`two_opt`], [`pocket_pair`], [`convex_pair`] with [`Relation`].
+//! (They live at the crate root: `gen`, the module name one might expect,
+//! is a reserved keyword in edition 2024.)
+//!
+//! ## Typical use in a test
+//! ```
+//! use polydist_oracle::{
+//!     Contact, Relation, SplitMix64, contact_status_convex, convex_distance, convex_pair,
+//!     ulps_error_sqrt,
+//! };
+//!
+//! let mut rng = SplitMix64::new(1);
+//! let pair = convex_pair(&mut rng, 6, 5, Relation::ParallelFacing);
+//! let exact = convex_distance(&pair.p, &pair.q);
+//! assert_eq!(Some(&exact.sq), pair.sq_dist.as_ref());
+//! assert_eq!(contact_status_convex(&pair.p, &pair.q), Contact::Disjoint);
+//! // An algorithm under test reports a distance and a feature pair; check both.
+//! let (reported_distance, reported_pair) = (exact.distance_nearest(), exact.pairs[0]);
+//! assert!(ulps_error_sqrt(reported_distance, &exact.sq) <= 3.5);
+//! assert!(exact.is_optimal_pair(reported_pair.0, reported_pair.1));
+//! ```
+
+mod contact;
+mod distance;
+mod exact;
+mod generators;
+mod hausdorff;
+mod rounding;
+mod shape;
+
+pub use crate::contact::{Contact, contact_status_convex, contact_status_simple};
+pub use crate::distance::{
+    ExactDistance, Feature, boundary_distance, convex_distance, feature_sq_dist,
+    min_vertex_distance,
+};
+pub use crate::exact::{
+    Location, point_in_polygon, rat, segments_intersect, sign_orient, sq_dist_pp, sq_dist_ps,
+    sq_dist_ss,
+};
+pub use crate::generators::convex::{
+    FacingPair, cocircular, cocircular_perturbed, parallel_facing, random_convex,
+    random_convex_lattice, sliver,
+};
+pub use crate::generators::pairs::{ConvexPair, Relation, convex_pair};
+pub use crate::generators::precision::{
+    Axis, OFFSETS, collinear_triples, near_collinear, offset, offset_family, short_dyadic,
+    with_gap_ulps,
+};
+pub use crate::generators::rng::SplitMix64;
+pub use crate::generators::simple::{
+    CombPair, PocketPair, comb, interleaved_combs, interleaved_combs_ulps, pocket_pair, spiral,
+    star, two_opt,
+};
+pub use crate::hausdorff::{
+    cmmr, directed_hausdorff_filled, hausdorff_filled, per_vertex_sq_dist,
+    sq_dist_point_filled_convex,
+};
+pub use crate::rounding::{
+    sqrt_nearest, step_ulps, to_f64_nearest, ulp_distance, ulps_error, ulps_error_sqrt,
+};
+pub use crate::shape::{is_convex, is_simple, is_strictly_convex, signed_area};

@@ -1,0 +1,218 @@
+//! Shewchuk's floating-point expansion arithmetic: exact sums and products of `f64` values.
+//!
+//! An expansion is a sum of `f64` components, nonoverlapping and ordered by increasing magnitude, whose
+//! exact (unrounded) sum is the represented value. Its sign is the sign of its largest component.
+//!
+//! Exactness holds while no product underflows: the exact stage (see `Polynomial`) only calls these routines on inputs
+//! rescaled by a power of two so that every intermediate value is far above the subnormal range
+//! (see `docs/ROBUSTNESS.md`).
+//!
+//! # References
+//! J. R. Shewchuk, "Adaptive Precision Floating-Point Arithmetic and Fast Robust Geometric Predicates",
+//! Discrete & Computational Geometry 18 (1997) 305–363: Theorems 6 (Two-Sum), 17 (Two-Product with
+//! Dekker's split), 13 (Fast-Expansion-Sum, here the linear-merge variant with zero elimination),
+//! 19 (Scale-Expansion).
+
+use smallvec::SmallVec;
+
+/// `s + e = a + b` exactly, `s = fl(a + b)` (Knuth's branch-free Two-Sum, Shewchuk Theorem 7).
+#[inline]
+pub(crate) fn two_sum(a: f64, b: f64) -> (f64, f64) {
+    let s = a + b;
+    let bv = s - a;
+    let av = s - bv;
+    let br = b - bv;
+    let ar = a - av;
+    (s, ar + br)
+}
+
+/// `s + e = a + b` exactly when `|a| ≥ |b|` or `a == 0` (Dekker's Fast-Two-Sum, Shewchuk Theorem 6).
+#[inline]
+fn fast_two_sum(a: f64, b: f64) -> (f64, f64) {
+    let s = a + b;
+    (s, b - (s - a))
+}
+
+/// Dekker's split: `a = hi + lo` with each half fitting in 26 bits (Shewchuk Theorem 17).
+#[inline]
+fn split(a: f64) -> (f64, f64) {
+    // splitter = 2^27 + 1
+    const SPLITTER: f64 = 134_217_729.0;
+    let c = SPLITTER * a;
+    let big = c - a;
+    let hi = c - big;
+    (hi, a - hi)
+}
+
+/// `p + e = a · b` exactly, `p = fl(a · b)` (Shewchuk's Two-Product; exact without underflow).
+#[inline]
+pub(crate) fn two_product(a: f64, b: f64) -> (f64, f64) {
+    let p = a * b;
+    let (ahi, alo) = split(a);
+    let (bhi, blo) = split(b);
+    let err1 = p - ahi * bhi;
+    let err2 = err1 - alo * bhi;
+    let err3 = err2 - ahi * blo;
+    (p, alo * blo - err3)
+}
+
+/// Inline capacity of an expansion: the compressed expansions our predicates produce are short.
+const INLINE: usize = 16;
+
+/// An exact real number represented as a nonoverlapping sum of `f64` components.
+///
+/// Used by the `Robust` kernel's exact stage and by the `Exact` kernel; it implements [`crate::Ring`].
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Expansion {
+    // Increasing magnitude, nonoverlapping, no zero components.
+    comps: SmallVec<[f64; INLINE]>,
+}
+
+impl Expansion {
+    /// The exact value `x`.
+    #[must_use]
+    pub fn from_f64(x: f64) -> Self {
+        let mut comps = SmallVec::new();
+        if x != 0.0 {
+            comps.push(x);
+        }
+        Expansion { comps }
+    }
+
+    /// The sign of the represented value (the sign of its most significant component).
+    #[must_use]
+    pub fn sign(&self) -> crate::Sign {
+        match self.comps.last() {
+            None => crate::Sign::Zero,
+            Some(&x) => crate::Sign::of_f64(x),
+        }
+    }
+
+    /// An approximation of the value (the sum of the components, rounded).
+    #[must_use]
+    pub fn approx(&self) -> f64 {
+        self.comps.iter().sum()
+    }
+
+    /// The number of nonzero components.
+    #[must_use]
+    pub fn len(&self) -> usize {
+        self.comps.len()
+    }
+
+    /// `true` when the value is exactly zero.
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        self.comps.is_empty()
+    }
+
+    /// The components, increasing in magnitude.
+    #[must_use]
+    pub fn components(&self) -> &[f64] {
+        &self.comps
+    }
+
+    /// `self + other`, exactly (linear expansion sum with zero elimination, Shewchuk Theorem 13).
+    #[must_use]
+    pub fn add(&self, other: &Self) -> Self {
+        let (e, f) = (&self.comps[..], &other.comps[..]);
+        if e.is_empty() {
+            return other.clone();
+        }
+        if f.is_empty() {
+            return self.clone();
+        }
+        // Merge the two sequences by magnitude, then sweep with Two-Sum (Shewchuk's Linear-Expansion-Sum,
+        // Theorem 13: the merged sequence is strongly nonoverlapping-compatible and the sweep is exact).
+        let mut merged: SmallVec<[f64; 2 * INLINE]> = SmallVec::with_capacity(e.len() + f.len());
+        let (mut i, mut j) = (0, 0);
+        while i < e.len() && j < f.len() {
+            if e[i].abs() < f[j].abs() {
+                merged.push(e[i]);
+                i += 1;
+            } else {
+                merged.push(f[j]);
+                j += 1;
+            }
+        }
+        merged.extend_from_slice(&e[i..]);
+        merged.extend_from_slice(&f[j..]);
+        let mut out: SmallVec<[f64; INLINE]> = SmallVec::with_capacity(merged.len());
+        let (mut q, mut qq) = fast_two_sum(merged[1], merged[0]);
+        for &g in &merged[2..] {
+            let (r, h) = fast_two_sum(g, qq);
+            if h != 0.0 {
+                out.push(h);
+            }
+            let (s, t) = two_sum(q, r);
+            q = s;
+            qq = t;
+        }
+        if qq != 0.0 {
+            out.push(qq);
+        }
+        if q != 0.0 {
+            out.push(q);
+        }
+        Expansion { comps: out }
+    }
+
+    /// `−self`, exactly.
+    #[must_use]
+    pub fn neg(&self) -> Self {
+        Expansion {
+            comps: self.comps.iter().map(|&x| -x).collect(),
+        }
+    }
+
+    /// `self − other`, exactly.
+    #[must_use]
+    pub fn sub(&self, other: &Self) -> Self {
+        self.add(&other.neg())
+    }
+
+    /// `self · b` for one `f64`, exactly (Scale-Expansion with zero elimination, Shewchuk Theorem 19).
+    #[must_use]
+    pub fn scale(&self, b: f64) -> Self {
+        let e = &self.comps[..];
+        let mut out: SmallVec<[f64; INLINE]> = SmallVec::with_capacity(2 * e.len());
+        if e.is_empty() || b == 0.0 {
+            return Expansion { comps: out };
+        }
+        let (mut q, h) = two_product(e[0], b);
+        if h != 0.0 {
+            out.push(h);
+        }
+        for &ei in &e[1..] {
+            let (p1, p0) = two_product(ei, b);
+            let (sum, h) = two_sum(q, p0);
+            if h != 0.0 {
+                out.push(h);
+            }
+            let (q2, h2) = fast_two_sum(p1, sum);
+            if h2 != 0.0 {
+                out.push(h2);
+            }
+            q = q2;
+        }
+        if q != 0.0 {
+            out.push(q);
+        }
+        Expansion { comps: out }
+    }
+
+    /// `self · other`, exactly: the sum of `self` scaled by each component of `other`.
+    #[must_use]
+    pub fn mul(&self, other: &Self) -> Self {
+        let (short, long) = if self.len() <= other.len() {
+            (self, other)
+        } else {
+            (other, self)
+        };
+        let mut acc = Expansion::default();
+        for &c in &short.comps {
+            acc = acc.add(&long.scale(c));
+        }
+        acc
+    }
+}

@@ -1,0 +1,226 @@
+//! Filtered exact signs of small homogeneous polynomials in input coordinates.
+//!
+//! Every decision of polydist's algorithms is the sign of a polynomial in the input coordinates. This
+//! module is the shared facility: write the polynomial once with [`Polynomial::eval`], generic over
+//! [`Ring`], and ask any [`crate::Kernel`] for its sign with [`crate::Kernel::sign`].
+//!
+//! # The pipeline (Robust kernel)
+//! 1. Filter: evaluate in [`Bounded`] (rounded value + rigorous error bound). If the bound certifies
+//!    the sign, done. This settles almost every call on non-degenerate input.
+//! 2. Expansions: rescale the inputs by one exact power of two so the largest magnitude lies in
+//!    `[1/2, 1)`, then evaluate exactly in [`Expansion`] arithmetic. A homogeneous polynomial of degree
+//!    `D` only changes by the positive factor `2^(kD)`, so the sign is unchanged. Expansion arithmetic
+//!    is exact when no product underflows, which the dynamic-range test below guarantees.
+//! 3. Integers: if the inputs' dynamic range is too wide for step 2, every input is an integer multiple
+//!    of `2^e_min`; scale them to integers and evaluate in [`BigInt`]. Exact for every finite input.
+//!
+//! The Exact kernel runs steps 2–3 only; the Fast kernel evaluates in `f64` and takes the sign.
+//!
+//! # Degree and range
+//! [`MAX_DEGREE`] = 16 bounds the degree accepted by [`Polynomial::DEGREE`]'s documentation contract;
+//! the pipeline is exact for any degree, but step 2 is only taken when
+//! `D · (e_min − 52) ≥ −1064`, where `e_min` is the binary exponent of the smallest nonzero scaled input:
+//! then every exact intermediate is an integer multiple of `2^−1064`, so no Two-Product loses a bit.
+//! For `D = 6` that admits a dynamic range of `2^125` within one query; wider ranges use step 3.
+
+use num_bigint::BigInt;
+
+use crate::Sign;
+use crate::expansion::Expansion;
+use crate::ring::{Bounded, Ring};
+
+/// The largest degree a [`Polynomial`] is documented to have (the pipeline stays exact beyond it, but
+/// the filter and the expansion stage were sized for it).
+pub const MAX_DEGREE: u32 = 16;
+
+/// A homogeneous polynomial in `N` input coordinates, whose sign a [`crate::Kernel`] decides.
+///
+/// # Contract
+/// - `eval` computes the polynomial with the [`Ring`] operations only (no comparisons, no branches on
+///   values), and the same expression for every ring.
+/// - The polynomial is homogeneous of degree [`Self::DEGREE`] in the inputs: scaling every input by
+///   `λ > 0` multiplies it by `λ^DEGREE`. Geometric predicates built from coordinate differences are.
+///   The kernels rely on this to rescale by powers of two; a non-homogeneous polynomial would get
+///   wrong signs under the exact stages.
+///
+/// # Examples
+/// The sign of `(b − a) · (c − a)` for points a, b, c (degree 2):
+/// ```
+/// use polydist_predicates::{Kernel, Polynomial, Ring, Robust, Sign};
+///
+/// struct DotAt;
+/// impl Polynomial<6> for DotAt {
+///     const DEGREE: u32 = 2;
+///     fn eval<R: Ring>(&self, x: &[R; 6]) -> R {
+///         let (ax, ay, bx, by, cx, cy) = (&x[0], &x[1], &x[2], &x[3], &x[4], &x[5]);
+///         bx.sub(ax).mul(&cx.sub(ax)).add(&by.sub(ay).mul(&cy.sub(ay)))
+///     }
+/// }
+/// let s = Robust::sign(&DotAt, &[0.0, 0.0, 1.0, 0.0, 0.0, 1.0]);
+/// assert_eq!(s, Sign::Zero);
+/// ```
+pub trait Polynomial<const N: usize> {
+    /// The homogeneous degree (at most [`MAX_DEGREE`]).
+    const DEGREE: u32;
+    /// The polynomial's value at `x`, computed in the ring `R`.
+    fn eval<R: Ring>(&self, x: &[R; N]) -> R;
+}
+
+/// Fast: plain `f64`, NaN counted as zero.
+#[inline(always)]
+pub(crate) fn sign_fast<const N: usize, P: Polynomial<N> + ?Sized>(p: &P, x: &[f64; N]) -> Sign {
+    Sign::of_f64(p.eval(x))
+}
+
+/// Robust: the [`Bounded`] filter, then the exact stages.
+#[inline]
+pub(crate) fn sign_robust<const N: usize, P: Polynomial<N> + ?Sized>(p: &P, x: &[f64; N]) -> Sign {
+    let b: [Bounded; N] = x.map(Bounded::input);
+    match p.eval(&b).certain_sign() {
+        Some(s) => s,
+        None => sign_exact(p, x),
+    }
+}
+
+/// Exact: expansions on rescaled inputs, or integers when the dynamic range is too wide.
+///
+/// Non-finite inputs are outside every kernel's contract; they give [`Sign::Zero`] rather than a panic.
+#[inline(never)]
+pub(crate) fn sign_exact<const N: usize, P: Polynomial<N> + ?Sized>(p: &P, x: &[f64; N]) -> Sign {
+    let Some(range) = Range::of(x) else {
+        return Sign::Zero;
+    };
+    let Some(e_max) = range.e_max else {
+        // Every input is zero: a homogeneous polynomial of positive degree vanishes; degree 0 is a constant.
+        let zeros: [Expansion; N] = core::array::from_fn(|_| Expansion::default());
+        return p.eval(&zeros).sign();
+    };
+    let e_min = range.e_min;
+    // After scaling by 2^(-e_max - 1) the largest magnitude is in [1/2, 1) and the smallest nonzero one
+    // has exponent e_min - e_max - 1.
+    let shift = -(e_max + 1);
+    let scaled_min = e_min + shift;
+    let d = i64::from(P::DEGREE.max(1));
+    if d * (i64::from(scaled_min) - 52) >= -1064 {
+        let xs: [Expansion; N] =
+            core::array::from_fn(|i| Expansion::from_f64(mul_pow2(x[i], shift)));
+        p.eval(&xs).sign()
+    } else {
+        // Every nonzero input is an integer multiple of 2^(e_min − 52): scale to integers.
+        let unit = e_min - 52;
+        let xs: [BigInt; N] = core::array::from_fn(|i| exact_integer(x[i], unit));
+        Sign::of_bigint(&p.eval(&xs))
+    }
+}
+
+/// The binary exponents of the largest and smallest nonzero magnitudes among the inputs.
+struct Range {
+    e_max: Option<i32>,
+    e_min: i32,
+}
+
+impl Range {
+    /// `None` when some input is not finite.
+    fn of(x: &[f64]) -> Option<Range> {
+        let mut e_max: Option<i32> = None;
+        let mut e_min = i32::MAX;
+        for &v in x {
+            if !v.is_finite() {
+                return None;
+            }
+            if v != 0.0 {
+                let e = exponent(v);
+                e_max = Some(e_max.map_or(e, |m| m.max(e)));
+                e_min = e_min.min(e);
+            }
+        }
+        Some(Range { e_max, e_min })
+    }
+}
+
+/// The binary exponent `e` of a finite nonzero `v`: `2^e ≤ |v| < 2^(e+1)` (subnormals included).
+pub(crate) fn exponent(v: f64) -> i32 {
+    let bits = v.to_bits();
+    let biased = ((bits >> 52) & 0x7ff) as i32;
+    if biased == 0 {
+        // Subnormal: value = mantissa · 2^-1074.
+        let mant = bits & ((1u64 << 52) - 1);
+        -1074 + (63 - mant.leading_zeros() as i32)
+    } else {
+        biased - 1023
+    }
+}
+
+/// `v · 2^k`, exact whenever the result is a normal number or zero (applied in steps that stay finite).
+pub(crate) fn mul_pow2(mut v: f64, mut k: i32) -> f64 {
+    // Each step multiplies by a representable power of two; intermediate results stay between the
+    // input and the output in magnitude, so none underflows when the output does not.
+    while k > 0 {
+        let s = k.min(1000);
+        v *= pow2(s);
+        k -= s;
+    }
+    while k < 0 {
+        let s = k.max(-1000);
+        v *= pow2(s);
+        k -= s;
+    }
+    v
+}
+
+/// `2^k` for `−1022 ≤ k ≤ 1023`.
+fn pow2(k: i32) -> f64 {
+    f64::from_bits(((k + 1023) as u64) << 52)
+}
+
+/// The integer `v / 2^unit`, exact when `v` is a multiple of `2^unit` (true for `unit ≤ e − 52`, with `e`
+/// the exponent of any nonzero input, and for subnormals since `unit ≥ −1074` is not required: the
+/// mantissa is shifted left instead).
+fn exact_integer(v: f64, unit: i32) -> BigInt {
+    if v == 0.0 {
+        return BigInt::from(0);
+    }
+    let (mant, exp) = decompose(v);
+    // v = mant · 2^exp with exp ≥ unit.
+    let shift = (exp - unit) as u32;
+    let m = BigInt::from(mant) << shift;
+    if v < 0.0 { -m } else { m }
+}
+
+/// `|v| = mant · 2^exp` with an integer mantissa, for finite nonzero `v`.
+pub(crate) fn decompose(v: f64) -> (u64, i32) {
+    let bits = v.to_bits();
+    let biased = ((bits >> 52) & 0x7ff) as i32;
+    let frac = bits & ((1u64 << 52) - 1);
+    if biased == 0 {
+        (frac, -1074)
+    } else {
+        (frac | (1u64 << 52), biased - 1075)
+    }
+}
+
+/// `x` as an integer, for an `f64` known to be integral (used by `Ring for BigInt`).
+pub(crate) fn integral_f64_to_bigint(x: f64) -> BigInt {
+    if x == 0.0 || !x.is_finite() {
+        return BigInt::from(0);
+    }
+    let (mant, exp) = decompose(x);
+    let m = if exp >= 0 {
+        BigInt::from(mant) << (exp as u32)
+    } else {
+        BigInt::from(mant >> ((-exp) as u32).min(63))
+    };
+    if x < 0.0 { -m } else { m }
+}
+
+impl Sign {
+    /// The sign of an integer.
+    #[must_use]
+    pub fn of_bigint(v: &BigInt) -> Sign {
+        match v.sign() {
+            num_bigint::Sign::Minus => Sign::Negative,
+            num_bigint::Sign::NoSign => Sign::Zero,
+            num_bigint::Sign::Plus => Sign::Positive,
+        }
+    }
+}
