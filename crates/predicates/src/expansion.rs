@@ -62,6 +62,8 @@ const INLINE: usize = 16;
 /// An exact real number represented as a nonoverlapping sum of `f64` components.
 ///
 /// Used by the `Robust` kernel's exact stage and by the `Exact` kernel; it implements [`crate::Ring`].
+/// Its operations are exact as long as nothing overflows and no product underflows; callers with
+/// arbitrary inputs should go through [`crate::Kernel::sign`] or [`crate::round_value`], which rescale.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Expansion {
     // Increasing magnitude, nonoverlapping, no zero components.
@@ -92,6 +94,67 @@ impl Expansion {
     #[must_use]
     pub fn approx(&self) -> f64 {
         self.comps.iter().sum()
+    }
+
+    /// The value rounded to the nearest `f64` (ties to even): one correct rounding of the exact value.
+    ///
+    /// This is what "compute the intermediates exactly, round once" means for constructions. Overflow
+    /// gives ±∞ as IEEE rounding would; values in the subnormal range round correctly too.
+    #[must_use]
+    pub fn to_f64(&self) -> f64 {
+        // Renormalise: sweep from the top with Fast-Two-Sum so that `top` is fl-close to the value and
+        // `rest` (exact) holds the remainder; then decide the rounding of top + rest exactly.
+        let comps = &self.comps[..];
+        let Some((&largest, lower)) = comps.split_last() else {
+            return 0.0;
+        };
+        let mut top = largest;
+        let mut rest = Expansion::default();
+        for &c in lower.iter().rev() {
+            let (s, e) = two_sum(top, c);
+            top = s;
+            rest = rest.add(&Expansion::from_f64(e));
+        }
+        if !top.is_finite() {
+            return top;
+        }
+        // Now value = top + rest exactly. While |rest| exceeds half an ulp of top, move top one step.
+        // A bounded number of steps suffices (|rest| ≤ a few ulps after the sweep); the loop is capped.
+        for _ in 0..8 {
+            let rs = rest.sign();
+            if rs == crate::Sign::Zero {
+                return top;
+            }
+            let toward = if rs == crate::Sign::Positive {
+                top.next_up()
+            } else {
+                top.next_down()
+            };
+            if !toward.is_finite() {
+                return toward;
+            }
+            // The midpoint between top and its neighbour lies at (toward − top)/2 from top; compare
+            // 2·rest with the step (toward − top), both exact (halving could underflow, doubling cannot
+            // overflow here: |rest| is a few ulps of a finite top).
+            let step = toward - top;
+            let diff = rest.scale(2.0).sub(&Expansion::from_f64(step));
+            let beyond = match rs {
+                crate::Sign::Positive => diff.sign(),
+                _ => diff.sign().reversed(),
+            };
+            match beyond {
+                crate::Sign::Negative => return top,
+                crate::Sign::Zero => {
+                    // A tie: the even one of top and toward.
+                    return if top.to_bits() & 1 == 0 { top } else { toward };
+                }
+                crate::Sign::Positive => {
+                    rest = rest.sub(&Expansion::from_f64(toward - top));
+                    top = toward;
+                }
+            }
+        }
+        top
     }
 
     /// The number of nonzero components.

@@ -320,7 +320,7 @@ impl Kernel for Robust {
         let t2 = (a.y - c.y) * (b.x - c.x);
         match filter_products(t1, t2) {
             Some(s) => Orientation::from_sign(s),
-            None => Orientation::from_sign(sign_exact(&Orient, &[a.x, a.y, b.x, b.y, c.x, c.y])),
+            None => orient_exact(a, b, c),
         }
     }
 
@@ -360,6 +360,27 @@ impl Kernel for Robust {
             Some(s) => s.to_ordering(),
             None => sign_exact(&Dist4, &[a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y]).to_ordering(),
         }
+    }
+}
+
+/// The exact orientation: Shewchuk's adaptive `orient2d` (the `robust` crate) where its no-overflow,
+/// no-underflow assumptions provably hold, our rescaling pipeline everywhere else.
+#[inline(never)]
+fn orient_exact(a: DVec2, b: DVec2, c: DVec2) -> Orientation {
+    // Every coordinate zero or within [2^-400, 2^400]: differences have tails ≥ 2^-452, products of two
+    // stay within [2^-957, 2^802], so no operation of Shewchuk's stages overflows or underflows.
+    const LO: f64 = f64::from_bits((1023 - 400) << 52);
+    const HI: f64 = f64::from_bits((1023 + 400) << 52);
+    let safe = |v: f64| v == 0.0 || (LO..=HI).contains(&v.abs());
+    if [a.x, a.y, b.x, b.y, c.x, c.y].into_iter().all(safe) {
+        let det = robust::orient2d(
+            robust::Coord { x: a.x, y: a.y },
+            robust::Coord { x: b.x, y: b.y },
+            robust::Coord { x: c.x, y: c.y },
+        );
+        Orientation::from_sign(Sign::of_f64(det))
+    } else {
+        Orientation::from_sign(sign_exact(&Orient, &[a.x, a.y, b.x, b.y, c.x, c.y]))
     }
 }
 

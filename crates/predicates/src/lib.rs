@@ -50,7 +50,7 @@ pub use kernel::{
 };
 pub use num_bigint::BigInt;
 pub use num_rational::BigRational;
-pub use poly::{MAX_DEGREE, Polynomial};
+pub use poly::{MAX_DEGREE, Polynomial, round_value};
 pub use range::{MAX_COORDINATE, is_valid_coordinate};
 pub use ring::{Bounded, Ring};
 pub use sign::{Orientation, Sign};

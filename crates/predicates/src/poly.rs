@@ -113,6 +113,71 @@ pub(crate) fn sign_exact<const N: usize, P: Polynomial<N> + ?Sized>(p: &P, x: &[
     }
 }
 
+/// The value of the homogeneous polynomial `p` at `x`, rounded once to the nearest `f64`.
+///
+/// The constructions' building block ("compute the intermediates exactly, round once"): the inputs are
+/// rescaled by a power of two, the polynomial is evaluated exactly (expansions, or integers when the
+/// dynamic range is too wide), rounded to nearest-even, and scaled back. The result is the correctly
+/// rounded value unless it lies in the subnormal range (then within one subnormal ulp) or overflows (±∞).
+/// Non-finite inputs give NaN.
+///
+/// # Examples
+/// ```
+/// use polydist_predicates::{round_value, Orient};
+/// // (a − c) × (b − c) for a = (1e16, 1), b = (1e16 + 2, 3), c = (0, 0): 3e16 − (1e16 + 2) = 2e16 − 2.
+/// let v = round_value(&Orient, &[1e16, 1.0, 1e16 + 2.0, 3.0, 0.0, 0.0]);
+/// assert_eq!(v, 2e16 - 2.0);
+/// ```
+#[must_use]
+pub fn round_value<const N: usize, P: Polynomial<N> + ?Sized>(p: &P, x: &[f64; N]) -> f64 {
+    let Some(range) = Range::of(x) else {
+        return f64::NAN;
+    };
+    let Some(e_max) = range.e_max else {
+        let zeros: [Expansion; N] = core::array::from_fn(|_| Expansion::default());
+        return p.eval(&zeros).to_f64();
+    };
+    let shift = -(e_max + 1);
+    let scaled_min = range.e_min + shift;
+    let d = P::DEGREE.max(1) as i32;
+    if d * (scaled_min - 52) >= -1064 {
+        let xs: [Expansion; N] =
+            core::array::from_fn(|i| Expansion::from_f64(mul_pow2(x[i], shift)));
+        // value(x) = value(x·2^shift) · 2^(−shift·D); the scaled value is far from under/overflow.
+        mul_pow2(p.eval(&xs).to_f64(), -shift * d)
+    } else {
+        let unit = range.e_min - 52;
+        let xs: [BigInt; N] = core::array::from_fn(|i| exact_integer(x[i], unit));
+        // value(x) = value(x / 2^unit) · 2^(unit·D).
+        bigint_times_pow2(&p.eval(&xs), unit * d)
+    }
+}
+
+/// `v · 2^e` rounded to nearest: keep the top 64 bits of `|v|` with a sticky bit for the rest (so the
+/// one rounding to 53 bits is correct), then scale by the remaining power of two.
+fn bigint_times_pow2(v: &BigInt, e: i32) -> f64 {
+    let mag = v.magnitude();
+    let bits = mag.bits();
+    let (top, dropped) = if bits > 64 {
+        let s = bits - 64;
+        let top = mag >> s;
+        let sticky = mag.trailing_zeros().is_some_and(|tz| tz < s);
+        let t = num_traits::ToPrimitive::to_u64(&top).unwrap_or(u64::MAX);
+        (t | u64::from(sticky), s as i64)
+    } else {
+        (num_traits::ToPrimitive::to_u64(mag).unwrap_or(u64::MAX), 0)
+    };
+    // A u64 with a sticky low bit converts to f64 with one correct rounding (63+ significant bits).
+    let m = top as f64;
+    let total = i64::from(e) + dropped;
+    let scaled = mul_pow2(m, total.clamp(-4000, 4000) as i32);
+    if v.sign() == num_bigint::Sign::Minus {
+        -scaled
+    } else {
+        scaled
+    }
+}
+
 /// The binary exponents of the largest and smallest nonzero magnitudes among the inputs.
 struct Range {
     e_max: Option<i32>,

@@ -1,0 +1,289 @@
+//! The sweep status: an ordered set of small integer ids, kept as a treap in an arena.
+//!
+//! Positions are decided by a caller-supplied comparator during insertion only; removal and the
+//! neighbour queries follow parent links and never compare. So whatever the comparator answers (even
+//! inconsistently), the structure stays a valid binary tree, every operation terminates, and nothing
+//! panics: insertion descends at most the tree's height, removal rotates the node down at most its
+//! height, and the neighbour walks climb or descend at most the height.
+//!
+//! Priorities are a fixed hash of the id (splitmix64), so runs are reproducible; the expected height is
+//! `O(log n)` as for a treap with random priorities, since the hash is unrelated to the geometric order.
+//!
+//! Reference: Seidel & Aragon, "Randomized search trees", Algorithmica 16 (1996).
+
+use core::cmp::Ordering;
+
+/// No node.
+const NIL: usize = usize::MAX;
+
+/// One id's node; ids index the arena directly.
+#[derive(Clone, Copy, Debug)]
+struct Node {
+    left: usize,
+    right: usize,
+    parent: usize,
+    priority: u64,
+    linked: bool,
+}
+
+/// An ordered set of the ids `0..capacity`, each inserted at most once at a time.
+#[derive(Debug)]
+pub(crate) struct Treap {
+    nodes: Vec<Node>,
+    root: usize,
+}
+
+/// splitmix64: a fixed, well-mixed hash of the id, used as its priority.
+fn priority(id: usize) -> u64 {
+    let mut z = (id as u64).wrapping_add(0x9E37_79B9_7F4A_7C15);
+    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+    z ^ (z >> 31)
+}
+
+impl Treap {
+    /// An empty set able to hold the ids `0..capacity`.
+    pub(crate) fn new(capacity: usize) -> Treap {
+        let nodes = (0..capacity)
+            .map(|id| Node {
+                left: NIL,
+                right: NIL,
+                parent: NIL,
+                priority: priority(id),
+                linked: false,
+            })
+            .collect();
+        Treap { nodes, root: NIL }
+    }
+
+    /// Inserts `id` where the comparator puts it: at each node `other` on the way down, `cmp(other)`
+    /// says whether `id` goes before (`Less`) or after (`Equal`, `Greater`) it. A comparator error stops
+    /// the insertion, leaves the set unchanged and is returned. Inserting a present id does nothing.
+    pub(crate) fn insert<E>(
+        &mut self,
+        id: usize,
+        mut cmp: impl FnMut(usize) -> Result<Ordering, E>,
+    ) -> Result<(), E> {
+        if self.nodes[id].linked {
+            return Ok(());
+        }
+        let mut parent = NIL;
+        let mut go_left = false;
+        let mut cur = self.root;
+        while cur != NIL {
+            parent = cur;
+            go_left = cmp(cur)? == Ordering::Less;
+            cur = if go_left {
+                self.nodes[cur].left
+            } else {
+                self.nodes[cur].right
+            };
+        }
+        self.nodes[id] = Node {
+            left: NIL,
+            right: NIL,
+            parent,
+            linked: true,
+            ..self.nodes[id]
+        };
+        if parent == NIL {
+            self.root = id;
+        } else if go_left {
+            self.nodes[parent].left = id;
+        } else {
+            self.nodes[parent].right = id;
+        }
+        // Restore the heap order on priorities; each rotation lifts `id` one level.
+        while self.nodes[id].parent != NIL
+            && self.nodes[self.nodes[id].parent].priority < self.nodes[id].priority
+        {
+            self.rotate_up(id);
+        }
+        Ok(())
+    }
+
+    /// Removes `id` (nothing when absent).
+    pub(crate) fn remove(&mut self, id: usize) {
+        if !self.nodes[id].linked {
+            return;
+        }
+        // Rotate `id` down until it is a leaf; each rotation shrinks its subtree, so this terminates.
+        loop {
+            let Node { left, right, .. } = self.nodes[id];
+            let child = match (left != NIL, right != NIL) {
+                (false, false) => break,
+                (true, false) => left,
+                (false, true) => right,
+                (true, true) => {
+                    if self.nodes[left].priority > self.nodes[right].priority {
+                        left
+                    } else {
+                        right
+                    }
+                }
+            };
+            self.rotate_up(child);
+        }
+        let parent = self.nodes[id].parent;
+        self.replace_child(parent, id, NIL);
+        self.nodes[id] = Node {
+            left: NIL,
+            right: NIL,
+            parent: NIL,
+            linked: false,
+            ..self.nodes[id]
+        };
+    }
+
+    /// The id just before `id` in the order (`None` for the first, or when `id` is absent).
+    pub(crate) fn prev(&self, id: usize) -> Option<usize> {
+        self.neighbour(id, |n| n.left, |n| n.right)
+    }
+
+    /// The id just after `id` in the order (`None` for the last, or when `id` is absent).
+    pub(crate) fn next(&self, id: usize) -> Option<usize> {
+        self.neighbour(id, |n| n.right, |n| n.left)
+    }
+
+    /// The in-order neighbour on the side `toward` (its mirror is `away`).
+    fn neighbour(
+        &self,
+        id: usize,
+        toward: impl Fn(&Node) -> usize,
+        away: impl Fn(&Node) -> usize,
+    ) -> Option<usize> {
+        if !self.nodes[id].linked {
+            return None;
+        }
+        let sub = toward(&self.nodes[id]);
+        if sub != NIL {
+            // The extreme node of the subtree on that side.
+            let mut cur = sub;
+            while away(&self.nodes[cur]) != NIL {
+                cur = away(&self.nodes[cur]);
+            }
+            return Some(cur);
+        }
+        // Climb until we arrive from the other side.
+        let mut cur = id;
+        let mut parent = self.nodes[cur].parent;
+        while parent != NIL && toward(&self.nodes[parent]) == cur {
+            cur = parent;
+            parent = self.nodes[cur].parent;
+        }
+        (parent != NIL).then_some(parent)
+    }
+
+    /// Rotates `x` above its parent, keeping the in-order sequence.
+    fn rotate_up(&mut self, x: usize) {
+        let p = self.nodes[x].parent;
+        if p == NIL {
+            return;
+        }
+        let g = self.nodes[p].parent;
+        if self.nodes[p].left == x {
+            let moved = self.nodes[x].right;
+            self.nodes[p].left = moved;
+            if moved != NIL {
+                self.nodes[moved].parent = p;
+            }
+            self.nodes[x].right = p;
+        } else {
+            let moved = self.nodes[x].left;
+            self.nodes[p].right = moved;
+            if moved != NIL {
+                self.nodes[moved].parent = p;
+            }
+            self.nodes[x].left = p;
+        }
+        self.nodes[p].parent = x;
+        self.nodes[x].parent = g;
+        self.replace_child(g, p, x);
+    }
+
+    /// Makes `new` the child of `parent` that `old` was (or the root when `parent` is `NIL`).
+    fn replace_child(&mut self, parent: usize, old: usize, new: usize) {
+        if parent == NIL {
+            self.root = new;
+        } else if self.nodes[parent].left == old {
+            self.nodes[parent].left = new;
+        } else {
+            self.nodes[parent].right = new;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The ids in order, by walking `next` from the first.
+    fn in_order(t: &Treap) -> Vec<usize> {
+        let Some(mut cur) = (0..t.nodes.len()).find(|&i| t.nodes[i].linked && t.prev(i).is_none())
+        else {
+            return Vec::new();
+        };
+        let mut out = vec![cur];
+        while let Some(n) = t.next(cur) {
+            out.push(n);
+            cur = n;
+        }
+        out
+    }
+
+    #[test]
+    fn keeps_order_of_keys_through_inserts_and_removes() {
+        // Keys are a permutation; the treap must list present ids sorted by key.
+        let n = 200;
+        let key: Vec<usize> = (0..n).map(|i| (i * 73) % n).collect();
+        let mut t = Treap::new(n);
+        for id in 0..n {
+            assert_eq!(
+                t.insert::<()>(id, |other| Ok(key[id].cmp(&key[other]))),
+                Ok(())
+            );
+        }
+        for id in (0..n).step_by(3) {
+            t.remove(id);
+        }
+        let mut expected: Vec<usize> = (0..n).filter(|id| id % 3 != 0).collect();
+        expected.sort_by_key(|&id| key[id]);
+        assert_eq!(in_order(&t), expected);
+        for &id in &expected {
+            let pos = expected.iter().position(|&x| x == id).unwrap_or(usize::MAX);
+            assert_eq!(t.prev(id), pos.checked_sub(1).map(|p| expected[p]));
+            assert_eq!(t.next(id), expected.get(pos + 1).copied());
+        }
+    }
+
+    #[test]
+    fn survives_an_inconsistent_comparator() {
+        let n = 300;
+        let mut t = Treap::new(n);
+        let mut coin = 12345u64;
+        for id in 0..n {
+            let inserted = t.insert::<()>(id, |_| {
+                coin = priority(coin as usize);
+                Ok(if coin % 2 == 0 {
+                    Ordering::Less
+                } else {
+                    Ordering::Greater
+                })
+            });
+            assert_eq!(inserted, Ok(()));
+        }
+        assert_eq!(in_order(&t).len(), n);
+        for id in 0..n {
+            t.remove(id);
+        }
+        assert!(in_order(&t).is_empty());
+    }
+
+    #[test]
+    fn a_comparator_error_leaves_the_set_unchanged() {
+        let mut t = Treap::new(3);
+        assert_eq!(t.insert::<()>(0, |_| Ok(Ordering::Less)), Ok(()));
+        assert_eq!(t.insert(1, Err), Err(0));
+        assert_eq!(in_order(&t), vec![0]);
+    }
+}
