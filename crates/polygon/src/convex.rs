@@ -378,7 +378,8 @@ impl ConvexPolygon {
     /// nearest to `q` (the foot of the perpendicular, clamped to the edge). The result is
     /// - `Vertex(j)` when `f` is the caller's vertex `j`: an end of the edge, or a dropped vertex on it
     ///   (among repeats, the first in the caller's order);
-    /// - otherwise `Edge(j)`, the caller's edge whose relative interior contains `f`;
+    /// - otherwise `Edge(j)`, the caller's edge whose relative interior contains `f` (a caller ring of
+    ///   exactly two vertices is a segment with the single edge `Edge(0)`);
     /// - `None` when `f` is inside a lid (see [`Self::is_lid`]), which is no caller feature.
     ///
     /// Decided by dot-product signs of input points under `K` (`sign((q − c)·(b − a))` for caller

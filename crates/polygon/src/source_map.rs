@@ -177,6 +177,10 @@ impl SourceMap {
         }
         Some(if s(k) == Sign::Zero {
             Feature::Vertex(caller(k))
+        } else if self.caller_len == 2 {
+            // A two-vertex caller ring is a segment with one edge, Edge(0) (its "closing" edge 1 is the
+            // same point set; the oracle and every result use the single-edge convention).
+            Feature::Edge(0)
         } else {
             Feature::Edge(caller(k - 1))
         })
