@@ -8,6 +8,7 @@
 //! |---|---|---|
 //! | [`predicates`] | `polydist-predicates` | exact predicates behind the `Fast`, `Robust` and `Exact` kernels |
 //! | [`polygon`] | `polydist-polygon` | validated `ConvexPolygon` and `SimplePolygon`, Melkman hull, point location |
+//! | [`convex`] | `polydist-convex` | convex–convex distance in O(log m + log n) with exact features and closest points |
 //!
 //! `polydist::polygon::ConvexPolygon` is the same item as `polydist_polygon::ConvexPolygon`. The row-minima
 //! search polydist uses (SMAWK) is its own crate, `monotone-minima`, with no dependency on anything of ours.
@@ -36,6 +37,7 @@
 //! # Ok::<(), polydist::PolygonError>(())
 //! ```
 
+pub use polydist_convex as convex;
 pub use polydist_polygon as polygon;
 pub use polydist_predicates as predicates;
 

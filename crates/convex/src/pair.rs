@@ -1,0 +1,229 @@
+//! Candidate realizing pairs in internal indices: canonical form, the Theorem-1 certificate, and the
+//! finished [`Closest`] in the caller's indices.
+
+use core::cmp::Ordering;
+
+use glam::DVec2;
+use polydist_polygon::predicates::{Dist2, Kernel, Orientation, Sign};
+use polydist_polygon::{ConvexPolygon, Feature};
+
+use crate::construct;
+use crate::result::Closest;
+
+/// A vertex–vertex or vertex–edge pair of `P` and `Q`, in internal indices.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Pair {
+    /// Vertex `i` of `P`, vertex `j` of `Q`.
+    Vv(usize, usize),
+    /// Vertex `i` of `P`, edge `j` of `Q`.
+    Ve(usize, usize),
+    /// Edge `i` of `P`, vertex `j` of `Q`.
+    Ev(usize, usize),
+}
+
+impl Pair {
+    /// The same pair with the roles of `P` and `Q` exchanged.
+    pub(crate) fn swapped(self) -> Pair {
+        match self {
+            Pair::Vv(i, j) => Pair::Vv(j, i),
+            Pair::Ve(i, j) => Pair::Ev(j, i),
+            Pair::Ev(i, j) => Pair::Ve(j, i),
+        }
+    }
+}
+
+/// Vertex `i` of the ring `v` (indices taken mod `len`).
+#[inline]
+pub(crate) fn at(v: &[DVec2], i: usize) -> DVec2 {
+    v[i % v.len()]
+}
+
+/// Vertex `i − 1` of the ring `v`.
+#[inline]
+pub(crate) fn prev(v: &[DVec2], i: usize) -> DVec2 {
+    v[(i % v.len() + v.len() - 1) % v.len()]
+}
+
+/// The squared distance of a pair, for exact comparison.
+pub(crate) fn dist2(p: &[DVec2], q: &[DVec2], pair: Pair) -> Dist2 {
+    match pair {
+        Pair::Vv(i, j) => Dist2::PointPoint(at(p, i), at(q, j)),
+        Pair::Ve(i, j) => Dist2::PointSegment(at(p, i), at(q, j), at(q, j + 1)),
+        Pair::Ev(i, j) => Dist2::PointSegment(at(q, j), at(p, i), at(p, i + 1)),
+    }
+}
+
+/// The nearer of two pairs (the first on ties).
+pub(crate) fn nearer<K: Kernel>(p: &[DVec2], q: &[DVec2], a: Pair, b: Pair) -> Pair {
+    if K::cmp_dist2(dist2(p, q, b), dist2(p, q, a)) == Ordering::Less {
+        b
+    } else {
+        a
+    }
+}
+
+/// Where the foot of `x` on the closed segment `ab` falls: `Some(false)` at `a`, `Some(true)` at `b`,
+/// `None` strictly inside (two exact dot signs).
+fn clamp<K: Kernel>(x: DVec2, a: DVec2, b: DVec2) -> Option<bool> {
+    if K::dot_sign(a, x, a, b) != Sign::Positive {
+        Some(false)
+    } else if K::dot_sign(b, x, b, a) != Sign::Positive {
+        Some(true)
+    } else {
+        None
+    }
+}
+
+/// The pair with a vertex–edge foot at an edge end replaced by the vertex–vertex pair.
+pub(crate) fn canonical<K: Kernel>(p: &[DVec2], q: &[DVec2], pair: Pair) -> Pair {
+    match pair {
+        Pair::Vv(..) => pair,
+        Pair::Ve(i, j) => match clamp::<K>(at(p, i), at(q, j), at(q, j + 1)) {
+            Some(false) => Pair::Vv(i, j % q.len()),
+            Some(true) => Pair::Vv(i, (j + 1) % q.len()),
+            None => pair,
+        },
+        Pair::Ev(i, j) => match clamp::<K>(at(q, j), at(p, i), at(p, i + 1)) {
+            Some(false) => Pair::Vv(i % p.len(), j),
+            Some(true) => Pair::Vv((i + 1) % p.len(), j),
+            None => pair,
+        },
+    }
+}
+
+/// Edge `i` of `v` oriented so that `x` lies strictly to its right, or `None`. A segment's two edges
+/// are its two directions, so either orientation is allowed there.
+fn outer_edge<K: Kernel>(v: &[DVec2], i: usize, x: DVec2) -> Option<(DVec2, DVec2)> {
+    let (a, b) = (at(v, i), at(v, i + 1));
+    match K::orient(a, b, x) {
+        Orientation::Clockwise => Some((a, b)),
+        Orientation::CounterClockwise if v.len() == 2 => Some((b, a)),
+        _ => None,
+    }
+}
+
+/// Theorem 1 (Lin–Canny), exact: the canonical `pair` realizes the distance of disjoint `P` and `Q`
+/// when `w = q* − p* ≠ 0`, `w ∈ N_P(p*)` and `−w ∈ N_Q(q*)`; then the lines through `p*` and `q*`
+/// perpendicular to `w` separate the polygons, so they are disjoint at distance `|w|`.
+pub(crate) fn certify<K: Kernel>(p: &[DVec2], q: &[DVec2], pair: Pair) -> bool {
+    use Sign::{Negative, Positive};
+    match pair {
+        Pair::Vv(i, j) => {
+            let (x, y) = (at(p, i), at(q, j));
+            x != y
+                && K::dot_sign(prev(p, i), x, x, y) != Negative
+                && K::dot_sign(x, at(p, i + 1), x, y) != Positive
+                && K::dot_sign(prev(q, j), y, x, y) != Positive
+                && K::dot_sign(y, at(q, j + 1), x, y) != Negative
+        }
+        Pair::Ve(i, j) => {
+            let x = at(p, i);
+            let Some((a, b)) = outer_edge::<K>(q, j, x) else {
+                return false;
+            };
+            // w ∝ rot90(b − a): (p_i − p_{i−1})·w ≥ 0 ⇔ (b − a) × (p_i − p_{i−1}) ≥ 0.
+            clamp::<K>(x, a, b).is_none()
+                && K::cross_sign(a, b, prev(p, i), x) != Negative
+                && K::cross_sign(a, b, x, at(p, i + 1)) != Positive
+        }
+        Pair::Ev(i, j) => {
+            let y = at(q, j);
+            let Some((a, b)) = outer_edge::<K>(p, i, y) else {
+                return false;
+            };
+            // −w ∝ rot90(b − a) for the outward normal w of P's edge.
+            clamp::<K>(y, a, b).is_none()
+                && K::cross_sign(a, b, prev(q, j), y) != Negative
+                && K::cross_sign(a, b, y, at(q, j + 1)) != Positive
+        }
+    }
+}
+
+/// Whether both support faces are edges (parallel facing edges), for a certified canonical pair.
+fn parallel<K: Kernel>(p: &[DVec2], q: &[DVec2], pair: Pair) -> bool {
+    let zero = Sign::Zero;
+    match pair {
+        Pair::Vv(i, j) => {
+            let (x, y) = (at(p, i), at(q, j));
+            let face_p = p.len() >= 2
+                && (K::dot_sign(prev(p, i), x, x, y) == zero
+                    || K::dot_sign(x, at(p, i + 1), x, y) == zero);
+            let face_q = q.len() >= 2
+                && (K::dot_sign(prev(q, j), y, x, y) == zero
+                    || K::dot_sign(y, at(q, j + 1), x, y) == zero);
+            face_p && face_q
+        }
+        Pair::Ve(i, j) => {
+            let (a, b, x) = (at(q, j), at(q, j + 1), at(p, i));
+            p.len() >= 2
+                && (K::cross_sign(a, b, prev(p, i), x) == zero
+                    || K::cross_sign(a, b, x, at(p, i + 1)) == zero)
+        }
+        Pair::Ev(i, j) => {
+            let (a, b, y) = (at(p, i), at(p, i + 1), at(q, j));
+            q.len() >= 2
+                && (K::cross_sign(a, b, prev(q, j), y) == zero
+                    || K::cross_sign(a, b, y, at(q, j + 1)) == zero)
+        }
+    }
+}
+
+/// The caller's vertex for internal vertex `i`.
+pub(crate) fn caller_vertex(poly: &ConvexPolygon, i: usize) -> Feature {
+    Feature::Vertex(poly.source_index(i % poly.len()))
+}
+
+/// The caller's feature containing the point of internal edge `e` nearest to `x` (a segment's two
+/// edges are one caller edge: use edge 0). A hull's lid is no caller feature; it is reported as the
+/// caller's edge starting at the lid's first vertex (documented on [`Closest`]'s users).
+pub(crate) fn caller_on_edge<K: Kernel>(poly: &ConvexPolygon, e: usize, x: DVec2) -> Feature {
+    let e = if poly.len() == 2 { 0 } else { e % poly.len() };
+    poly.caller_feature_on_edge::<K>(e, x)
+        .unwrap_or(Feature::Edge(poly.source_index(e)))
+}
+
+/// The finished [`Closest`] of a canonical pair (certified by the caller of this function).
+pub(crate) fn finish<K: Kernel>(pp: &ConvexPolygon, qq: &ConvexPolygon, pair: Pair) -> Closest {
+    let (p, q) = (pp.vertices(), qq.vertices());
+    let parallel = parallel::<K>(p, q, pair);
+    match pair {
+        Pair::Vv(i, j) => {
+            let b = construct::vertex_vertex(at(p, i), at(q, j));
+            Closest {
+                distance: b.distance,
+                squared_distance: b.squared,
+                point_p: b.vertex,
+                point_q: b.other,
+                feature_p: caller_vertex(pp, i),
+                feature_q: caller_vertex(qq, j),
+                parallel,
+            }
+        }
+        Pair::Ve(i, j) => {
+            let x = at(p, i);
+            let b = construct::vertex_edge(x, at(q, j), at(q, j + 1));
+            Closest {
+                distance: b.distance,
+                squared_distance: b.squared,
+                point_p: b.vertex,
+                point_q: b.other,
+                feature_p: caller_vertex(pp, i),
+                feature_q: caller_on_edge::<K>(qq, j, x),
+                parallel,
+            }
+        }
+        Pair::Ev(i, j) => {
+            let y = at(q, j);
+            let b = construct::vertex_edge(y, at(p, i), at(p, i + 1));
+            Closest {
+                distance: b.distance,
+                squared_distance: b.squared,
+                point_p: b.other,
+                point_q: b.vertex,
+                feature_p: caller_on_edge::<K>(pp, i, y),
+                feature_q: caller_vertex(qq, j),
+                parallel,
+            }
+        }
+    }
+}

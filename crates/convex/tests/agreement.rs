@@ -1,0 +1,184 @@
+//! Agreement of `distance`, `distance_yang_with` and `distance_brute` with the exact oracle, on random
+//! convex pairs in every relative position, points, segments, and exact ties.
+
+mod common;
+
+use common::{Worst, check_all};
+use glam::DVec2;
+use polydist_convex::polygon::predicates::{Exact, Robust};
+use polydist_convex::{reset_search_stats, search_stats};
+use polydist_oracle::{
+    Relation, SplitMix64, cocircular, convex_pair, parallel_facing, random_convex, sliver,
+};
+use proptest::prelude::*;
+
+const RELATIONS: [Relation; 12] = [
+    Relation::Far,
+    Relation::NearlyTouching { ulps: 1 },
+    Relation::NearlyTouching { ulps: 5 },
+    Relation::TouchingVertex,
+    Relation::TouchingEdge,
+    Relation::VertexOnEdge,
+    Relation::Overlapping,
+    Relation::Nested,
+    Relation::ParallelFacing,
+    Relation::HugeOffset,
+    Relation::Sliver,
+    Relation::CollinearInput,
+];
+
+fn report(name: &str, w: Worst) {
+    let s = search_stats();
+    println!(
+        "{name}: max distance error {:.3} ulps, squared {:.3} ulps, foot {:.3} ulps; stats {s:?}",
+        w.distance, w.squared, w.foot
+    );
+}
+
+fn merge(a: &mut Worst, b: Worst) {
+    a.distance = a.distance.max(b.distance);
+    a.squared = a.squared.max(b.squared);
+    a.foot = a.foot.max(b.foot);
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig {
+        cases: 160,
+        failure_persistence: Some(Box::new(proptest::test_runner::FileFailurePersistence::Direct(
+            "proptest-regressions/agreement.txt",
+        ))),
+        ..ProptestConfig::default()
+    })]
+
+    #[test]
+    fn random_pairs_every_relation(seed in any::<u64>(), rel in 0..RELATIONS.len(), n in 3usize..200, m in 3usize..200) {
+        let mut rng = SplitMix64::new(seed);
+        // Keep most cases small so the O(nm) oracle stays fast.
+        let (n, m) = if seed % 4 == 0 { (n, m) } else { (3 + n % 20, 3 + m % 20) };
+        let pair = convex_pair(&mut rng, n, m, RELATIONS[rel]);
+        check_all::<Robust>(&pair.p, &pair.q, n * m <= 2500);
+    }
+}
+
+#[test]
+fn every_relation_small_sizes_robust_and_exact() {
+    reset_search_stats();
+    let mut worst = Worst::default();
+    let mut rng = SplitMix64::new(7);
+    for rel in RELATIONS {
+        for n in 3..12 {
+            for m in [3, 4, 5, 8, 13] {
+                let pair = convex_pair(&mut rng, n, m, rel);
+                merge(&mut worst, check_all::<Robust>(&pair.p, &pair.q, true));
+                merge(&mut worst, check_all::<Exact>(&pair.p, &pair.q, true));
+            }
+        }
+    }
+    report("relations", worst);
+    let s = search_stats();
+    assert_eq!(
+        s.brute_fallbacks, 0,
+        "the search failed on a disjoint input: {s:?}"
+    );
+}
+
+/// Points and segments (and their touching/overlapping cases) against polygons, and each other.
+#[test]
+fn points_and_segments() {
+    reset_search_stats();
+    let mut worst = Worst::default();
+    let mut rng = SplitMix64::new(11);
+    let lattice = |rng: &mut SplitMix64| {
+        DVec2::new(rng.range_i64(-50, 50) as f64, rng.range_i64(-50, 50) as f64)
+    };
+    for round in 0..400 {
+        let n = 3 + round % 30;
+        let poly: Vec<DVec2> = polydist_oracle::random_convex_lattice(&mut rng, n.min(10), 40);
+        let a = lattice(&mut rng);
+        let b = lattice(&mut rng);
+        let v = poly[rng.index(poly.len())];
+        let w = poly[(rng.index(poly.len()) + 1) % poly.len()];
+        let mid = (v + w) * 0.5;
+        let mut shapes: Vec<Vec<DVec2>> = vec![
+            vec![a],
+            vec![v],
+            vec![mid],
+            vec![a, b],
+            vec![v, a],
+            vec![mid, a],
+        ];
+        if a != b {
+            shapes.push(vec![a, b]);
+        }
+        if v != w {
+            shapes.push(vec![v, w]);
+            shapes.push(vec![v * 2.0 - w, v]);
+        }
+        for s in &shapes {
+            if s.len() == 2 && s[0] == s[1] {
+                continue;
+            }
+            merge(&mut worst, check_all::<Robust>(s, &poly, true));
+            merge(&mut worst, check_all::<Exact>(s, &poly, true));
+            for t in &shapes {
+                if t.len() == 2 && t[0] == t[1] {
+                    continue;
+                }
+                merge(&mut worst, check_all::<Robust>(s, t, true));
+            }
+        }
+    }
+    report("points and segments", worst);
+    assert_eq!(search_stats().brute_fallbacks, 0);
+}
+
+/// Exact ties: parallel facing edges with integer directions, co-circular vertices, slivers, huge offsets.
+#[test]
+fn exact_ties_and_hard_numbers() {
+    reset_search_stats();
+    let mut worst = Worst::default();
+    let mut rng = SplitMix64::new(3);
+    for k in 0..60 {
+        let d = (rng.range_i64(-40, 40), rng.range_i64(-40, 40));
+        if d == (0, 0) {
+            continue;
+        }
+        let f = parallel_facing(&mut rng, 3 + k % 40, d, f64::from(1 + k as u32 % 3));
+        merge(&mut worst, check_all::<Robust>(&f.p, &f.q, true));
+    }
+    // Co-circular vertices: two copies of a circle polygon, one shifted by an exact integer amount.
+    for k in 1..5 {
+        let c = cocircular(k);
+        let r = c.iter().map(|p| p.x).fold(0.0, f64::max);
+        for shift in [
+            DVec2::new(2.0 * r + 1.0, 0.0),
+            DVec2::new(2.0 * r, 2.0 * r),
+            DVec2::new(2.0 * r, 0.0),
+        ] {
+            let moved: Vec<DVec2> = c.iter().map(|&p| p + shift).collect();
+            merge(&mut worst, check_all::<Robust>(&c, &moved, c.len() < 40));
+        }
+    }
+    // Slivers and huge offsets from the generators at larger sizes.
+    for n in [16, 50, 120] {
+        let a = sliver(&mut rng, n, 1e6);
+        let b: Vec<DVec2> = sliver(&mut rng, n, 1e3)
+            .iter()
+            .map(|&p| p + DVec2::new(0.5, 3.0))
+            .collect();
+        merge(&mut worst, check_all::<Robust>(&a, &b, false));
+        let c = random_convex(&mut rng, n, DVec2::new(1e12, -1e12), 1e3);
+        let d = random_convex(&mut rng, n, DVec2::new(1e12 + 2500.0, -1e12 + 700.0), 1e3);
+        merge(&mut worst, check_all::<Robust>(&c, &d, false));
+        for rel in [
+            Relation::HugeOffset,
+            Relation::NearlyTouching { ulps: 2 },
+            Relation::Sliver,
+        ] {
+            let pair = convex_pair(&mut rng, n, n / 2 + 3, rel);
+            merge(&mut worst, check_all::<Robust>(&pair.p, &pair.q, false));
+        }
+    }
+    report("ties and hard numbers", worst);
+    assert_eq!(search_stats().brute_fallbacks, 0);
+}

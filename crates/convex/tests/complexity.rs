@@ -1,0 +1,142 @@
+//! Complexity by counting predicate calls (never timing): the search costs at most
+//! `C·(log₂n + log₂m) + K` predicates on disjoint polygons, and never falls back.
+
+use glam::DVec2;
+use polydist_convex::polygon::ConvexPolygon;
+use polydist_convex::polygon::predicates::{
+    Counted, Robust, predicate_counts, reset_predicate_counts,
+};
+use polydist_convex::{distance_yang_with, reset_search_stats, search_stats};
+use polydist_oracle::{SplitMix64, random_convex};
+
+/// Predicates per `log₂n + log₂m` (measured: see the test's output and the docs).
+const C: f64 = 13.0;
+/// Constant term.
+const K: f64 = 60.0;
+
+#[test]
+fn predicate_count_is_logarithmic() {
+    let mut rng = SplitMix64::new(99);
+    reset_search_stats();
+    let mut worst_ratio: f64 = 0.0;
+    for k in 3..=16 {
+        let n = 1usize << k;
+        let mut max_count = 0;
+        for trial in 0..12 {
+            let m = if trial % 2 == 0 { n } else { 8 + rng.index(n) };
+            let p = random_convex(&mut rng, n, DVec2::ZERO, 1.0);
+            let angle = rng.unit_f64() * std::f64::consts::TAU;
+            let dist = 4.0 + 3.0 * rng.unit_f64();
+            let center = DVec2::new(angle.cos(), angle.sin()) * dist;
+            let radius = 0.5 + rng.unit_f64();
+            let q = random_convex(&mut rng, m, center, radius);
+            let (pp, qq) = (
+                ConvexPolygon::try_new(&p).expect("valid"),
+                ConvexPolygon::try_new(&q).expect("valid"),
+            );
+            reset_predicate_counts();
+            let s = distance_yang_with::<Counted<Robust>>(&pp, &qq);
+            let count = predicate_counts().total();
+            let logs = (pp.len() as f64).log2() + (qq.len() as f64).log2();
+            if s.closest().is_some() {
+                assert!(
+                    count as f64 <= C * logs + K,
+                    "n = {n}, m = {m}: {count} predicates"
+                );
+                worst_ratio = worst_ratio.max((count as f64 - K) / logs);
+            }
+            max_count = max_count.max(count);
+        }
+        println!("n = 2^{k}: at most {max_count} predicates");
+    }
+    let s = search_stats();
+    println!("worst (count − {K}) / (log₂n + log₂m) = {worst_ratio:.2}; {s:?}");
+    assert_eq!(s.brute_fallbacks, 0, "{s:?}");
+}
+
+/// Large pairs in every disjoint relation: the outcome matches the construction, and the count of
+/// certificate failures (repaired by reseeding, or by the brute force) is reported.
+#[test]
+fn large_pairs_every_disjoint_relation() {
+    use polydist_oracle::{Contact, Relation, convex_pair};
+    let mut rng = SplitMix64::new(2024);
+    reset_search_stats();
+    let relations = [
+        Relation::Far,
+        Relation::NearlyTouching { ulps: 1 },
+        Relation::ParallelFacing,
+        Relation::HugeOffset,
+        Relation::Sliver,
+        Relation::CollinearInput,
+    ];
+    let mut disjoint = 0;
+    for rel in relations {
+        for &(n, m) in &[(50, 7), (300, 60), (400, 400), (17, 300)] {
+            for _ in 0..4 {
+                let pair = convex_pair(&mut rng, n, m, rel);
+                let (pp, qq) = (
+                    ConvexPolygon::try_new(&pair.p).expect("valid"),
+                    ConvexPolygon::try_new(&pair.q).expect("valid"),
+                );
+                let s = distance_yang_with::<Robust>(&pp, &qq);
+                assert_eq!(
+                    s.closest().is_some(),
+                    pair.contact == Contact::Disjoint,
+                    "{rel:?} {n}×{m}"
+                );
+                disjoint += usize::from(pair.contact == Contact::Disjoint);
+            }
+        }
+    }
+    let s = search_stats();
+    println!("{disjoint} disjoint large pairs; {s:?}");
+    assert_eq!(s.brute_fallbacks, 0, "{s:?}");
+}
+
+/// Many disjoint pairs (3..300 vertices) per relation: how often the first search fails its
+/// certificate, how often a reseed repairs it, and that the brute force never has to answer.
+#[test]
+fn fallback_counts_on_many_disjoint_pairs() {
+    use polydist_oracle::{Contact, Relation, convex_pair};
+    let relations = [
+        Relation::Far,
+        Relation::NearlyTouching { ulps: 1 },
+        Relation::NearlyTouching { ulps: 3 },
+        Relation::ParallelFacing,
+        Relation::HugeOffset,
+        Relation::Sliver,
+        Relation::CollinearInput,
+    ];
+    let mut rng = SplitMix64::new(12345);
+    for rel in relations {
+        reset_search_stats();
+        let mut disjoint = 0;
+        for _ in 0..3000 {
+            let cn = if rng.coin() { 12 } else { 300 };
+            let n = 3 + rng.index(cn);
+            let cm = if rng.coin() { 12 } else { 300 };
+            let m = 3 + rng.index(cm);
+            let pair = convex_pair(&mut rng, n, m, rel);
+            if pair.contact != Contact::Disjoint {
+                continue;
+            }
+            disjoint += 1;
+            let pp = ConvexPolygon::try_new(&pair.p).expect("valid");
+            let qq = ConvexPolygon::try_new(&pair.q).expect("valid");
+            assert!(
+                distance_yang_with::<Robust>(&pp, &qq).closest().is_some(),
+                "{rel:?}"
+            );
+        }
+        let s = search_stats();
+        println!(
+            "{rel:?}: {disjoint} disjoint; first search failed {}, repaired by reseed {}, brute force {}",
+            s.certificate_failures, s.repaired_by_retry, s.brute_fallbacks
+        );
+        assert_eq!(s.brute_fallbacks, 0, "{rel:?}: {s:?}");
+        assert_eq!(
+            s.certificate_failures, s.repaired_by_retry,
+            "{rel:?}: {s:?}"
+        );
+    }
+}
