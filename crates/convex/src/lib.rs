@@ -45,8 +45,10 @@ mod extreme;
 mod meet;
 mod pair;
 mod result;
+mod schwartz;
 mod yang;
 
 pub use brute::distance_brute;
 pub use result::{Closest, SearchStats, Separation, reset_search_stats, search_stats};
+pub use schwartz::{distance_schwartz, distance_schwartz_with};
 pub use yang::{SCAN_BELOW, distance, distance_to_point, distance_with, distance_yang_with};

@@ -264,6 +264,36 @@ impl Kernel for Fast {
     fn sign<const N: usize, P: Polynomial<N> + ?Sized>(p: &P, x: &[f64; N]) -> Sign {
         sign_fast(p, x)
     }
+
+    // The hot predicates written out, so the baseline is the plain expression whatever the inliner does.
+    #[inline(always)]
+    fn orient(a: DVec2, b: DVec2, c: DVec2) -> Orientation {
+        Orientation::from_sign(Sign::of_f64(
+            (a.x - c.x) * (b.y - c.y) - (a.y - c.y) * (b.x - c.x),
+        ))
+    }
+
+    #[inline(always)]
+    fn dot_sign(a: DVec2, b: DVec2, c: DVec2, d: DVec2) -> Sign {
+        Sign::of_f64((b.x - a.x) * (d.x - c.x) + (b.y - a.y) * (d.y - c.y))
+    }
+
+    #[inline(always)]
+    fn cross_sign(a: DVec2, b: DVec2, c: DVec2, d: DVec2) -> Sign {
+        Sign::of_f64((b.x - a.x) * (d.y - c.y) - (b.y - a.y) * (d.x - c.x))
+    }
+
+    #[inline(always)]
+    fn cmp_dist(p: DVec2, a: DVec2, b: DVec2) -> Ordering {
+        let (ax, ay, bx, by) = (p.x - a.x, p.y - a.y, p.x - b.x, p.y - b.y);
+        Sign::of_f64((ax * ax + ay * ay) - (bx * bx + by * by)).to_ordering()
+    }
+
+    #[inline(always)]
+    fn cmp_dist4(a: DVec2, b: DVec2, c: DVec2, d: DVec2) -> Ordering {
+        let (ex, ey, fx, fy) = (a.x - b.x, a.y - b.y, c.x - d.x, c.y - d.y);
+        Sign::of_f64((ex * ex + ey * ey) - (fx * fx + fy * fy)).to_ordering()
+    }
 }
 
 /// Exact decisions at nearly the cost of `f64`: a floating-point filter with a proved error bound,

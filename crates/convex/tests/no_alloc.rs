@@ -1,0 +1,81 @@
+//! A distance query allocates nothing on the heap: `distance` and `distance_yang_with::<Robust>` on
+//! disjoint pairs of random convex polygons (3 … 4096 vertices), counted by a global allocator wrapper
+//! (`stats_alloc`).
+//!
+//! Scope: **generic** inputs (random float coordinates, no exact ties), where the Robust kernel's
+//! filters decide almost every sign and the constructions' exact evaluation stays in inline
+//! expansions. Degenerate inputs may reach exact stages that can spill (`SmallVec` expansions, or
+//! `BigInt` on a wide dynamic range); they are not claimed here.
+//!
+//! The counter is process-wide, so this file holds a single test (no other test thread allocates
+//! while a region is open), and the polygons are built before each measured region.
+
+use std::alloc::System;
+
+use glam::DVec2;
+use polydist_convex::polygon::ConvexPolygon;
+use polydist_convex::polygon::predicates::Robust;
+use polydist_convex::{Separation, distance, distance_yang_with};
+use polydist_oracle::{SplitMix64, random_convex};
+use stats_alloc::{INSTRUMENTED_SYSTEM, Region, StatsAlloc};
+
+#[global_allocator]
+static GLOBAL: &StatsAlloc<System> = &INSTRUMENTED_SYSTEM;
+
+/// A disjoint pair: two random convex polygons in squares of half-side 1 (so within `√2` of their
+/// centres), centres `3 + gap` apart along a random direction (or along +x when `along_x`).
+fn pair(rng: &mut SplitMix64, n: usize, m: usize, along_x: bool) -> (ConvexPolygon, ConvexPolygon) {
+    let dir = if along_x {
+        DVec2::X
+    } else {
+        let t = rng.unit_f64() * core::f64::consts::TAU;
+        DVec2::new(t.cos(), t.sin())
+    };
+    let gap = 0.01 + rng.unit_f64();
+    let p = random_convex(rng, n, DVec2::ZERO, 1.0);
+    let q = random_convex(rng, m, dir * (3.0 + gap), 1.0);
+    (
+        ConvexPolygon::try_new(&p).expect("valid P"),
+        ConvexPolygon::try_new(&q).expect("valid Q"),
+    )
+}
+
+#[test]
+fn robust_queries_do_not_allocate() {
+    const SIZES: [usize; 9] = [3, 4, 5, 7, 8, 16, 64, 512, 4096];
+    let mut rng = SplitMix64::new(2024);
+    let mut queries = 0;
+    for (k, &n) in SIZES.iter().enumerate() {
+        for &m in &SIZES[k..] {
+            for round in 0..6 {
+                let (p, q) = pair(&mut rng, n, m, round % 3 == 0);
+                let region = Region::new(GLOBAL);
+                let a = distance(&p, &q);
+                let b = distance_yang_with::<Robust>(&p, &q);
+                let c = distance(&q, &p);
+                let d = distance_yang_with::<Robust>(&q, &p);
+                let change = region.change();
+                assert_eq!(
+                    (change.allocations, change.reallocations),
+                    (0, 0),
+                    "n = {n}, m = {m}, round {round}: {change:?}"
+                );
+                // The inputs are disjoint: a query that returned early would not test the search.
+                for s in [a, b, c, d] {
+                    assert!(
+                        matches!(s, Separation::Disjoint(_)),
+                        "n = {n}, m = {m}: {s:?}"
+                    );
+                }
+                assert_eq!(a.distance(), b.distance());
+                queries += 4;
+            }
+        }
+    }
+    // The counter itself works: an allocation inside a region is seen.
+    let region = Region::new(GLOBAL);
+    let v = std::hint::black_box(vec![1u8; 32]);
+    assert!(region.change().allocations >= 1);
+    drop(v);
+    assert_eq!(queries, 45 * 6 * 4);
+}

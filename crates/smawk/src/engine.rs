@@ -1,0 +1,443 @@
+//! The SMAWK engine: row minima of a totally monotone matrix, iteratively and without per-level
+//! allocation.
+//!
+//! The engine sees the matrix as a fallible lookup `(row, column) -> Result<T, E>` and a strict
+//! order `less(a, b)`; the public functions build both (the `f64` ones check for NaN in the lookup,
+//! the others use `E = Infallible`).
+//!
+//! SMAWK(R, C) reduces the columns C to at most |R| candidates C' (REDUCE), recurses on the odd
+//! rows of R with C', and then fills in the even rows by scanning C' between the minima of their
+//! odd neighbours (INTERPOLATE). Here the recursion is unrolled into levels:
+//!
+//! - The rows of level `l` are never stored: they are `2^l - 1`, `2 * 2^l - 1`, ... (the odd rows
+//!   of level `l - 1`), `rows >> l` of them.
+//! - Each level has a list of candidate columns. Level 0 starts with all the columns, unstored.
+//!   A level whose inherited list is more than `SLACK` times longer than its row count REDUCEs
+//!   it; the others share their parent's list (skipping REDUCE where it would remove few columns
+//!   saves more lookups than it costs in INTERPOLATE). The reduced lists are stored one after the
+//!   other in one buffer, preallocated once, with, for each candidate, its position in the
+//!   previous list; REDUCE uses the free end of the buffer as its stack.
+//! - Going up, minima are positions in the current level's list, so each even row knows the exact
+//!   range of candidates to scan; positions are mapped to the parent list level by level, and to
+//!   columns at the end.
+
+use alloc::vec::Vec;
+
+/// Levels with at most this many rows are scanned directly instead of being split further.
+const BASE_ROWS: usize = 1;
+
+/// A level REDUCEs its inherited candidate list only if the list has more than `SLACK` times as
+/// many columns as the level has rows. Measured (see `docs/algorithms/smawk.md`): 2 is faster than
+/// 1 (plain SMAWK) on every benchmark matrix and size, 3 and 4 are no better.
+const SLACK: usize = 2;
+
+/// Matrices with at most this many entries are searched by a plain scan, without allocating any
+/// scratch space. Measured: the crossover with SMAWK is around 8 × 8 on cheap `f64` entries.
+pub(crate) const SCAN_AREA: usize = 64;
+
+/// Scratch space for [`smawk_into`], reusable across calls.
+pub(crate) struct Workspace<T> {
+    /// The stored candidate lists, one after the other; then the REDUCE stack.
+    columns: Vec<usize>,
+    /// Parallel to `columns`: the candidate's position in the previous level's list.
+    parents: Vec<usize>,
+    /// During REDUCE, `values[k]` is the entry of the stack's `k`-th column in the `k`-th row.
+    values: Vec<T>,
+}
+
+impl<T> Workspace<T> {
+    pub(crate) const fn new() -> Self {
+        Self {
+            columns: Vec::new(),
+            parents: Vec::new(),
+            values: Vec::new(),
+        }
+    }
+}
+
+/// A level's candidate list.
+#[derive(Clone, Copy, Default)]
+struct Level {
+    /// Where the list starts in the buffer (if stored).
+    start: usize,
+    /// Its length.
+    len: usize,
+    /// Whether it is stored; if not, it is all the columns `0..len`.
+    stored: bool,
+    /// Whether this level made it by REDUCE (so `parents` map it to the previous list); if not,
+    /// it is the previous level's list.
+    reduced: bool,
+}
+
+/// The `k`-th row of level `level`: `(k + 1) * 2^level - 1`.
+///
+/// Callers keep `k < rows >> level`, so the result is below `rows` and cannot overflow.
+#[inline(always)]
+const fn row_of(level: u32, k: usize) -> usize {
+    ((k + 1) << level) - 1
+}
+
+/// A candidate list: position to column.
+trait List {
+    fn column(&self, buffer: &[usize], position: usize) -> usize;
+}
+
+/// All the columns, never stored.
+struct AllColumns;
+
+impl List for AllColumns {
+    #[inline(always)]
+    fn column(&self, _buffer: &[usize], position: usize) -> usize {
+        position
+    }
+}
+
+/// A list stored in the buffer from `.0` on.
+struct Stored(usize);
+
+impl List for Stored {
+    #[inline(always)]
+    fn column(&self, buffer: &[usize], position: usize) -> usize {
+        buffer[self.0 + position]
+    }
+}
+
+/// Row minima of the `rows` × `columns` matrix `lookup`, leftmost on ties, written to
+/// `argmin[..rows]`. With `VALUES`, `sink(row, value)` receives each row's minimum value once;
+/// without, `sink` is never called, and a row whose minimum is forced (a single candidate left)
+/// costs no lookup.
+///
+/// Requires `argmin.len() >= rows`. For a totally monotone matrix the result is exact; for any
+/// other matrix it is some column index per row, without panics.
+///
+/// Lookups: at most `3 * columns + 12 * rows` for any matrix (see `docs/algorithms/smawk.md`).
+pub(crate) fn smawk_into<T, E, const VALUES: bool>(
+    rows: usize,
+    columns: usize,
+    lookup: &mut impl FnMut(usize, usize) -> Result<T, E>,
+    less: &mut impl FnMut(&T, &T) -> bool,
+    argmin: &mut [usize],
+    sink: &mut impl FnMut(usize, T),
+    ws: &mut Workspace<T>,
+) -> Result<(), E> {
+    if rows == 0 || columns == 0 {
+        return Ok(());
+    }
+    if rows
+        .checked_mul(columns)
+        .is_some_and(|area| area <= SCAN_AREA)
+    {
+        return scan_into(rows, columns, lookup, less, argmin, sink);
+    }
+    // Stored lists: the top one has at most `rows` candidates, the others at most half the
+    // previous level's rows each.
+    ws.columns.clear();
+    ws.columns.reserve(rows.saturating_mul(2));
+    ws.parents.clear();
+    ws.parents.reserve(rows.saturating_mul(2));
+    ws.values.clear();
+    ws.values.reserve(rows);
+
+    let mut levels = [Level::default(); usize::BITS as usize + 1];
+    levels[0] = if columns > rows.saturating_mul(SLACK) {
+        reduce(&AllColumns, columns, 0, rows, lookup, less, ws)?;
+        Level {
+            start: 0,
+            len: ws.columns.len(),
+            stored: true,
+            reduced: true,
+        }
+    } else {
+        Level {
+            start: 0,
+            len: columns,
+            stored: false,
+            reduced: false,
+        }
+    };
+
+    // Down: reduce where worthwhile.
+    let mut level: u32 = 0;
+    while rows >> level > BASE_ROWS {
+        let parent = levels[level as usize];
+        level += 1;
+        let level_rows = rows >> level;
+        levels[level as usize] = if parent.len > level_rows * SLACK {
+            let start = ws.columns.len();
+            if parent.stored {
+                reduce(
+                    &Stored(parent.start),
+                    parent.len,
+                    level,
+                    level_rows,
+                    lookup,
+                    less,
+                    ws,
+                )?;
+            } else {
+                reduce(&AllColumns, parent.len, level, level_rows, lookup, less, ws)?;
+            }
+            Level {
+                start,
+                len: ws.columns.len() - start,
+                stored: true,
+                reduced: true,
+            }
+        } else {
+            Level {
+                reduced: false,
+                ..parent
+            }
+        };
+    }
+
+    // The last level: scan each row from the previous row's minimum on.
+    let last = levels[level as usize];
+    let mut from = 0;
+    for k in 0..rows >> level {
+        let row = row_of(level, k);
+        from = if last.stored {
+            scan::<T, E, VALUES>(
+                row,
+                &Stored(last.start),
+                &ws.columns,
+                from,
+                last.len - 1,
+                lookup,
+                less,
+                sink,
+            )?
+        } else {
+            scan::<T, E, VALUES>(
+                row,
+                &AllColumns,
+                &ws.columns,
+                from,
+                last.len - 1,
+                lookup,
+                less,
+                sink,
+            )?
+        };
+        argmin[row] = from;
+    }
+
+    // Up: the even rows of each level, between the minima of the odd ones.
+    while level > 0 {
+        let child = levels[level as usize];
+        level -= 1;
+        let list = levels[level as usize];
+        let parents = if child.reduced {
+            &ws.parents[child.start..child.start + child.len]
+        } else {
+            &[]
+        };
+        if list.stored {
+            interpolate::<T, E, VALUES>(
+                level,
+                rows,
+                list.len,
+                &Stored(list.start),
+                &ws.columns,
+                parents,
+                lookup,
+                less,
+                argmin,
+                sink,
+            )?;
+        } else {
+            interpolate::<T, E, VALUES>(
+                level,
+                rows,
+                list.len,
+                &AllColumns,
+                &ws.columns,
+                parents,
+                lookup,
+                less,
+                argmin,
+                sink,
+            )?;
+        }
+    }
+
+    // Positions in the level-0 list to columns.
+    let top = levels[0];
+    if top.stored {
+        let list = &ws.columns[top.start..top.start + top.len];
+        for slot in &mut argmin[..rows] {
+            *slot = list.get(*slot).copied().unwrap_or(0);
+        }
+    }
+    Ok(())
+}
+
+/// Row minima by a plain scan of every entry; for small matrices and the brute-force twin.
+pub(crate) fn scan_into<T, E>(
+    rows: usize,
+    columns: usize,
+    lookup: &mut impl FnMut(usize, usize) -> Result<T, E>,
+    less: &mut impl FnMut(&T, &T) -> bool,
+    argmin: &mut [usize],
+    sink: &mut impl FnMut(usize, T),
+) -> Result<(), E> {
+    if columns == 0 {
+        return Ok(());
+    }
+    for (row, slot) in argmin.iter_mut().enumerate().take(rows) {
+        let mut best = lookup(row, 0)?;
+        let mut best_column = 0;
+        for column in 1..columns {
+            let value = lookup(row, column)?;
+            if less(&value, &best) {
+                best = value;
+                best_column = column;
+            }
+        }
+        *slot = best_column;
+        sink(row, best);
+    }
+    Ok(())
+}
+
+/// The position of the leftmost minimum of `row` over the list positions `from..=to`
+/// (`from <= to`, both in bounds); with `VALUES`, the minimum goes to `sink`. Without `VALUES` a
+/// single candidate costs no lookup.
+#[inline(always)]
+#[expect(
+    clippy::too_many_arguments,
+    reason = "an internal helper, inlined into its three callers"
+)]
+fn scan<T, E, const VALUES: bool>(
+    row: usize,
+    list: &impl List,
+    buffer: &[usize],
+    from: usize,
+    to: usize,
+    lookup: &mut impl FnMut(usize, usize) -> Result<T, E>,
+    less: &mut impl FnMut(&T, &T) -> bool,
+    sink: &mut impl FnMut(usize, T),
+) -> Result<usize, E> {
+    if !VALUES && from == to {
+        return Ok(from);
+    }
+    let mut best_pos = from;
+    let mut best = lookup(row, list.column(buffer, from))?;
+    for pos in from + 1..to + 1 {
+        let value = lookup(row, list.column(buffer, pos))?;
+        if less(&value, &best) {
+            best = value;
+            best_pos = pos;
+        }
+    }
+    if VALUES {
+        sink(row, best);
+    }
+    Ok(best_pos)
+}
+
+/// REDUCE: pushes onto the buffer the at most `level_rows` columns of the input list (with their
+/// input positions) that can still hold the leftmost minimum of some row of `level` (all of them,
+/// in a totally monotone matrix).
+///
+/// The stack's `k`-th column is the only candidate left for the `k`-th row among the columns
+/// popped or discarded so far; `ws.values[k]` caches its entry in that row, so each comparison
+/// costs one lookup, and a column that pops pushes with the entry its last comparison looked up.
+fn reduce<T, E>(
+    input: &impl List,
+    input_len: usize,
+    level: u32,
+    level_rows: usize,
+    lookup: &mut impl FnMut(usize, usize) -> Result<T, E>,
+    less: &mut impl FnMut(&T, &T) -> bool,
+    ws: &mut Workspace<T>,
+) -> Result<(), E> {
+    let base = ws.columns.len();
+    let values = &mut ws.values;
+    values.clear();
+    for index in 0..input_len {
+        let column = input.column(&ws.columns, index);
+        let depth = values.len();
+        let Some(top) = values.last() else {
+            values.push(lookup(row_of(level, 0), column)?);
+            ws.columns.push(column);
+            ws.parents.push(index);
+            continue;
+        };
+        let value = lookup(row_of(level, depth - 1), column)?;
+        if !less(&value, top) {
+            // The top keeps its row; `column` goes above it if there is a row left for it.
+            if depth < level_rows {
+                values.push(lookup(row_of(level, depth), column)?);
+                ws.columns.push(column);
+                ws.parents.push(index);
+            }
+            continue;
+        }
+        // `column` is strictly better in the top's row, hence in every later row: the top is
+        // dead for its own row and all later ones (earlier rows are covered below it). Pop until
+        // `column` stops winning; it takes the last freed row with the entry already looked up.
+        let mut value = value;
+        let mut depth = depth - 1;
+        while let Some(top) = depth.checked_sub(1).map(|k| &values[k]) {
+            let above = lookup(row_of(level, depth - 1), column)?;
+            if !less(&above, top) {
+                break;
+            }
+            value = above;
+            depth -= 1;
+        }
+        values.truncate(depth);
+        values.push(value);
+        ws.columns.truncate(base + depth);
+        ws.columns.push(column);
+        ws.parents.truncate(base + depth);
+        ws.parents.push(index);
+    }
+    Ok(())
+}
+
+/// INTERPOLATE at `level`: on entry the odd rows hold their minima as positions in the child
+/// level's list (mapped to this level's list through `parents`, or the same list if `parents` is
+/// empty); on exit every row of the level holds its minimum as a position in this level's list.
+#[expect(
+    clippy::too_many_arguments,
+    reason = "an internal helper with two call sites"
+)]
+fn interpolate<T, E, const VALUES: bool>(
+    level: u32,
+    rows: usize,
+    len: usize,
+    list: &impl List,
+    buffer: &[usize],
+    parents: &[usize],
+    lookup: &mut impl FnMut(usize, usize) -> Result<T, E>,
+    less: &mut impl FnMut(&T, &T) -> bool,
+    argmin: &mut [usize],
+    sink: &mut impl FnMut(usize, T),
+) -> Result<(), E> {
+    let level_rows = rows >> level;
+    let mut from = 0;
+    for k in (0..level_rows).step_by(2) {
+        // The odd successor's minimum, in this list (the end for the last row). Never before
+        // `from`, so that scans stay in bounds and move forward even if the matrix is not
+        // totally monotone.
+        let to = if k + 1 < level_rows {
+            let odd = row_of(level, k + 1);
+            let child = argmin[odd];
+            let here = if parents.is_empty() {
+                child
+            } else {
+                parents.get(child).copied().unwrap_or(0)
+            };
+            argmin[odd] = here.max(from);
+            argmin[odd]
+        } else {
+            len - 1
+        };
+        let row = row_of(level, k);
+        argmin[row] = scan::<T, E, VALUES>(row, list, buffer, from, to, lookup, less, sink)?;
+        from = to;
+    }
+    Ok(())
+}
