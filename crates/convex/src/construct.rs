@@ -18,7 +18,7 @@
 //! distances below `2^-500`).
 
 use glam::DVec2;
-use polydist_predicates::{Polynomial, Ring, round_value};
+use polydist_predicates::{Polynomial, Ring, estimate_value, round_value};
 
 /// `|p − q|²` (degree 2). Inputs `[px, py, qx, qy]`.
 struct SqDist;
@@ -131,7 +131,17 @@ fn foot(x: DVec2, a: DVec2, b: DVec2, l: f64) -> DVec2 {
             return g;
         }
         input[6] = g;
-        let r = if k == 0 {
+        // The residual only needs a few correct bits: take the double-double estimate when its bound is
+        // below 2^-10 ulp(g) after division by L, else evaluate it exactly.
+        let est = if k == 0 {
+            estimate_value(&FootResidual::<0>, &input)
+        } else {
+            estimate_value(&FootResidual::<1>, &input)
+        };
+        let ulp_g = (g.next_up() - g).abs();
+        let r = if est.error / l <= ulp_g / 1024.0 {
+            est.value
+        } else if k == 0 {
             round_value(&FootResidual::<0>, &input)
         } else {
             round_value(&FootResidual::<1>, &input)

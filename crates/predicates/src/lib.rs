@@ -35,6 +35,7 @@
 #![forbid(unsafe_code)]
 
 mod counting;
+mod dd;
 pub mod exact;
 mod expansion;
 mod kernel;
@@ -50,7 +51,7 @@ pub use kernel::{
 };
 pub use num_bigint::BigInt;
 pub use num_rational::BigRational;
-pub use poly::{MAX_DEGREE, Polynomial, round_value};
+pub use poly::{Estimate, MAX_DEGREE, Polynomial, estimate_value, round_value};
 pub use range::{MAX_COORDINATE, is_valid_coordinate};
 pub use ring::{Bounded, Ring};
 pub use sign::{Orientation, Sign};

@@ -26,6 +26,7 @@
 use num_bigint::BigInt;
 
 use crate::Sign;
+use crate::dd::DoubleDouble;
 use crate::expansion::Expansion;
 use crate::ring::{Bounded, Ring};
 
@@ -115,9 +116,12 @@ pub(crate) fn sign_exact<const N: usize, P: Polynomial<N> + ?Sized>(p: &P, x: &[
 
 /// The value of the homogeneous polynomial `p` at `x`, rounded once to the nearest `f64`.
 ///
-/// The constructions' building block ("compute the intermediates exactly, round once"): the inputs are
-/// rescaled by a power of two, the polynomial is evaluated exactly (expansions, or integers when the
-/// dynamic range is too wide), rounded to nearest-even, and scaled back. The result is the correctly
+/// The constructions' building block ("compute the intermediates exactly, round once"). First the
+/// polynomial is evaluated in double-double arithmetic with a rigorous error bound; when the bound
+/// shows the exact value strictly inside one rounding cell, that rounding is returned (the common case,
+/// tens of nanoseconds). Otherwise the inputs are rescaled by a power of two, the polynomial is
+/// evaluated exactly (expansions, or integers when the dynamic range is too wide), rounded to
+/// nearest-even, and scaled back. The result is the correctly
 /// rounded value unless it lies in the subnormal range (then within one subnormal ulp) or overflows (±∞).
 /// Non-finite inputs give NaN.
 ///
@@ -130,6 +134,44 @@ pub(crate) fn sign_exact<const N: usize, P: Polynomial<N> + ?Sized>(p: &P, x: &[
 /// ```
 #[must_use]
 pub fn round_value<const N: usize, P: Polynomial<N> + ?Sized>(p: &P, x: &[f64; N]) -> f64 {
+    // Fast stage: double-double with a rigorous bound; exact whenever the bound certifies the rounding.
+    let dd: [DoubleDouble; N] = x.map(DoubleDouble::input);
+    if let Some(v) = p.eval(&dd).certain_rounding() {
+        return v;
+    }
+    round_value_exact(p, x)
+}
+
+/// A value with a rigorous bound on its error: `|exact − value| ≤ error` (`error` may be `+∞`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Estimate {
+    /// An approximation of the exact value (the leading part of a double-double evaluation).
+    pub value: f64,
+    /// An upper bound on `|exact − value|`; `+∞` (or NaN-free infinite) when nothing is certified.
+    pub error: f64,
+}
+
+/// The value of the homogeneous polynomial `p` at `x`, about 106 bits accurate, with a rigorous error
+/// bound: for corrections that need a small quantity to a few bits only (a residual), where
+/// [`round_value`]'s correct rounding would be wasted work.
+///
+/// # Examples
+/// ```
+/// use polydist_predicates::{estimate_value, Orient};
+/// let e = estimate_value(&Orient, &[1.0, 0.0, 0.0, 1.0, 0.0, 0.0]);
+/// assert_eq!(e.value, 1.0);
+/// assert!(e.error < 1e-300);
+/// ```
+#[must_use]
+pub fn estimate_value<const N: usize, P: Polynomial<N> + ?Sized>(p: &P, x: &[f64; N]) -> Estimate {
+    let dd: [DoubleDouble; N] = x.map(DoubleDouble::input);
+    let (value, error) = p.eval(&dd).estimate();
+    Estimate { value, error }
+}
+
+/// [`round_value`] without the double-double stage (always exact evaluation, then one rounding).
+#[inline(never)]
+fn round_value_exact<const N: usize, P: Polynomial<N> + ?Sized>(p: &P, x: &[f64; N]) -> f64 {
     let Some(range) = Range::of(x) else {
         return f64::NAN;
     };

@@ -37,6 +37,19 @@ proptest! {
     #![proptest_config(ProptestConfig { cases: 3000, ..ProptestConfig::default() })]
 
     #[test]
+    fn round_value_decides_ties_and_near_ties(m in 1u64..(1 << 52), e in -500i32..500, k in -3i32..=3, z in 40u32..70) {
+        // x·1 − c·1 with c = half an ulp of x, nudged by k·2^-z relative: exact ties and values a hair
+        // from a midpoint, where the double-double stage must defer to exact arithmetic.
+        let x = (m as f64 + (1u64 << 52) as f64) * 2f64.powi(e);
+        let half = (x.next_up() - x) / 2.0;
+        let c = half + f64::from(k) * half * 2f64.powi(-(z as i32));
+        let exact = q(x) - q(c);
+        prop_assert_eq!(round_value(&Cross2, &[x, 1.0, c, 1.0]).to_bits(), to_f64_nearest(&exact).to_bits());
+        let exact = q(x) + q(c);
+        prop_assert_eq!(round_value(&Cross2, &[x, 1.0, -c, 1.0]).to_bits(), to_f64_nearest(&exact).to_bits());
+    }
+
+    #[test]
     fn round_value_is_correctly_rounded_over_the_whole_range(a in common::any_coord(), b in common::any_coord(), c in common::any_coord(), d in common::any_coord()) {
         let exact = q(a) * q(b) - q(c) * q(d);
         let want = to_f64_nearest(&exact);
