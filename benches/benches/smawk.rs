@@ -3,11 +3,16 @@
 //!
 //! Matrices (entries computed on demand, never stored):
 //! - D1: `(x_i - y_j)²` with `x`, `y` sorted uniform random in `[0, 1)`.
-//! - D2: Euclidean distances between points on two disjoint arcs of one circle, the second arc
-//!   traversed backwards.
+//! - D2: Euclidean distances (`sqrt(dx² + dy²)`) between points on two disjoint arcs of one
+//!   circle, the second arc traversed backwards.
+//!
+//! Series: `monotone-minima-f64` (`row_minima_f64`, NaN-checked), `monotone-minima-by`
+//! (`row_minima_by` with the IEEE order, unchecked like the peer), `smawk-0.3.3`,
+//! `divide-and-conquer` and, up to n = 10^4, `naive`.
 //!
 //! Run with `cargo bench -p polydist-benches --bench smawk`.
 
+use std::cmp::Ordering;
 use std::f64::consts::PI;
 use std::hint::black_box;
 use std::time::Duration;
@@ -83,7 +88,7 @@ impl ArcDistances {
     #[inline]
     fn at(&self, i: usize, j: usize) -> f64 {
         let (a, b) = (self.p[i], self.q[j]);
-        f64::hypot(a.0 - b.0, a.1 - b.1)
+        ((a.0 - b.0) * (a.0 - b.0) + (a.1 - b.1) * (a.1 - b.1)).sqrt()
     }
 }
 
@@ -133,10 +138,28 @@ impl<M: Implicit> smawk::Matrix<f64> for Peer<'_, M> {
     }
 }
 
-fn ours<M: Implicit>(m: &M) -> Vec<usize> {
+/// `row_minima_f64`: IEEE order, NaN checked on every lookup, every minimum looked up.
+fn ours_f64<M: Implicit>(m: &M) -> Vec<usize> {
     let n = m.size();
     monotone_minima::row_minima_f64(&monotone_minima::from_fn(n, n, |i, j| m.at(i, j)))
         .expect("benchmark matrices have no NaN")
+}
+
+/// IEEE order for NaN-free data, as a total order.
+fn ieee(a: &f64, b: &f64) -> Ordering {
+    if a < b {
+        Ordering::Less
+    } else if a > b {
+        Ordering::Greater
+    } else {
+        Ordering::Equal
+    }
+}
+
+/// `row_minima_by` with the IEEE order: no NaN check, like the `smawk` crate's `PartialOrd`.
+fn ours_by<M: Implicit>(m: &M) -> Vec<usize> {
+    let n = m.size();
+    monotone_minima::row_minima_by(&monotone_minima::from_fn(n, n, |i, j| m.at(i, j)), ieee)
 }
 
 fn peer<M: Implicit>(m: &M) -> Vec<usize> {
@@ -209,10 +232,22 @@ fn bench_family<M: Implicit>(c: &mut Criterion, name: &str, make: impl Fn(usize)
         let m = make(n);
         // All implementations must agree (ties are measure-zero with random reals).
         let expected = divide_and_conquer(&m);
-        assert_eq!(ours(&m), expected, "monotone-minima disagrees at n = {n}");
+        assert_eq!(
+            ours_f64(&m),
+            expected,
+            "monotone-minima (f64) disagrees at n = {n}"
+        );
+        assert_eq!(
+            ours_by(&m),
+            expected,
+            "monotone-minima (by) disagrees at n = {n}"
+        );
         assert_eq!(peer(&m), expected, "smawk disagrees at n = {n}");
-        group.bench_with_input(BenchmarkId::new("monotone-minima", n), &m, |b, m| {
-            b.iter(|| ours(black_box(m)))
+        group.bench_with_input(BenchmarkId::new("monotone-minima-f64", n), &m, |b, m| {
+            b.iter(|| ours_f64(black_box(m)))
+        });
+        group.bench_with_input(BenchmarkId::new("monotone-minima-by", n), &m, |b, m| {
+            b.iter(|| ours_by(black_box(m)))
         });
         group.bench_with_input(BenchmarkId::new("smawk-0.3.3", n), &m, |b, m| {
             b.iter(|| peer(black_box(m)))

@@ -175,9 +175,10 @@ fn online<T, E>(
 /// assert_eq!(result.values[n], 4); // 3 + 3 + 4, 3 + 4 + 3 or 4 + 3 + 3
 ///
 /// // Walk the predecessors back from n.
-/// let mut cuts = vec![n];
-/// while *cuts.last().unwrap() > 0 {
-///     cuts.push(result.rows[*cuts.last().unwrap()]);
+/// let (mut j, mut cuts) = (n, vec![n]);
+/// while j > 0 {
+///     j = result.rows[j];
+///     cuts.push(j);
 /// }
 /// assert_eq!(cuts, [10, 6, 3, 0]); // 3 + 3 + 4: the topmost predecessor wins ties
 /// ```
