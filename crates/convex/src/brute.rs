@@ -3,7 +3,7 @@
 use polydist_polygon::ConvexPolygon;
 use polydist_polygon::predicates::Kernel;
 
-use crate::meet::{Meet, classify};
+use crate::meet::{classify, separation};
 use crate::pair::{Pair, canonical, finish, nearer};
 use crate::result::Separation;
 
@@ -37,19 +37,9 @@ use crate::result::Separation;
 /// 7(9), 2006 (Definition 1, Theorem 1).
 #[must_use]
 pub fn distance_brute<K: Kernel>(p: &ConvexPolygon, q: &ConvexPolygon) -> Separation {
-    match classify::<K>(p, q, false) {
-        Meet::Disjoint => Separation::Disjoint(finish::<K>(p, q, brute_pair::<K>(p, q))),
-        Meet::Touching {
-            point,
-            feature_p,
-            feature_q,
-        } => Separation::Touching {
-            point,
-            feature_p,
-            feature_q,
-        },
-        Meet::Overlapping => Separation::Overlapping,
-    }
+    separation(classify::<K>(p, q, false), || {
+        finish::<K>(p, q, brute_pair::<K>(p, q))
+    })
 }
 
 /// The nearest canonical vertex–vertex / vertex–edge pair over all pairs (meaningful when disjoint).

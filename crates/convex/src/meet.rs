@@ -19,6 +19,7 @@ use polydist_polygon::{ConvexPolygon, Feature};
 
 use crate::extreme::extreme_left_of;
 use crate::pair::{at, caller_on_edge, caller_vertex};
+use crate::result::{Closest, Separation};
 
 /// How two convex polygons meet.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -33,6 +34,23 @@ pub(crate) enum Meet {
     },
     /// Their relative interiors meet.
     Overlapping,
+}
+
+/// The answer for a contact status; `closest` (called only when disjoint) gives the closest pair.
+pub(crate) fn separation(meet: Meet, closest: impl FnOnce() -> Closest) -> Separation {
+    match meet {
+        Meet::Disjoint => Separation::Disjoint(closest()),
+        Meet::Touching {
+            point,
+            feature_p,
+            feature_q,
+        } => Separation::Touching {
+            point,
+            feature_p,
+            feature_q,
+        },
+        Meet::Overlapping => Separation::Overlapping,
+    }
 }
 
 /// The vertex of `v` with the largest `orient(a, b, ·)` and that sign.

@@ -186,44 +186,45 @@ pub(crate) fn caller_on_edge<K: Kernel>(poly: &ConvexPolygon, e: usize, x: DVec2
 pub(crate) fn finish<K: Kernel>(pp: &ConvexPolygon, qq: &ConvexPolygon, pair: Pair) -> Closest {
     let (p, q) = (pp.vertices(), qq.vertices());
     let parallel = parallel::<K>(p, q, pair);
-    match pair {
-        Pair::Vv(i, j) => {
-            let b = construct::vertex_vertex(at(p, i), at(q, j));
-            Closest {
-                distance: b.distance,
-                squared_distance: b.squared,
-                point_p: b.vertex,
-                point_q: b.other,
-                feature_p: caller_vertex(pp, i),
-                feature_q: caller_vertex(qq, j),
-                parallel,
-            }
-        }
+    // `b.vertex` is on `P` unless the pair is edge–vertex.
+    let (b, vertex_on_p, feature_p, feature_q) = match pair {
+        Pair::Vv(i, j) => (
+            construct::vertex_vertex(at(p, i), at(q, j)),
+            true,
+            caller_vertex(pp, i),
+            caller_vertex(qq, j),
+        ),
         Pair::Ve(i, j) => {
             let x = at(p, i);
-            let b = construct::vertex_edge(x, at(q, j), at(q, j + 1));
-            Closest {
-                distance: b.distance,
-                squared_distance: b.squared,
-                point_p: b.vertex,
-                point_q: b.other,
-                feature_p: caller_vertex(pp, i),
-                feature_q: caller_on_edge::<K>(qq, j, x),
-                parallel,
-            }
+            (
+                construct::vertex_edge(x, at(q, j), at(q, j + 1)),
+                true,
+                caller_vertex(pp, i),
+                caller_on_edge::<K>(qq, j, x),
+            )
         }
         Pair::Ev(i, j) => {
             let y = at(q, j);
-            let b = construct::vertex_edge(y, at(p, i), at(p, i + 1));
-            Closest {
-                distance: b.distance,
-                squared_distance: b.squared,
-                point_p: b.other,
-                point_q: b.vertex,
-                feature_p: caller_on_edge::<K>(pp, i, y),
-                feature_q: caller_vertex(qq, j),
-                parallel,
-            }
+            (
+                construct::vertex_edge(y, at(p, i), at(p, i + 1)),
+                false,
+                caller_on_edge::<K>(pp, i, y),
+                caller_vertex(qq, j),
+            )
         }
+    };
+    let (point_p, point_q) = if vertex_on_p {
+        (b.vertex, b.other)
+    } else {
+        (b.other, b.vertex)
+    };
+    Closest {
+        distance: b.distance,
+        squared_distance: b.squared,
+        point_p,
+        point_q,
+        feature_p,
+        feature_q,
+        parallel,
     }
 }

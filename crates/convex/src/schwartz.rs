@@ -41,7 +41,7 @@ use polydist_polygon::predicates::{Kernel, Polynomial, Ring, Robust, Sign};
 
 use crate::brute::brute_pair;
 use crate::extreme::{extreme, extreme_left_of};
-use crate::meet::{Meet, classify};
+use crate::meet::{classify, separation};
 use crate::pair::{Pair, at, canonical, certify, finish, nearer};
 use crate::result::Separation;
 
@@ -437,19 +437,9 @@ pub fn distance_schwartz_with<K: Kernel>(pp: &ConvexPolygon, qq: &ConvexPolygon)
     if let Some(pair) = closest_candidate::<K>(p, q).filter(|&b| certify::<K>(p, q, b)) {
         return Separation::Disjoint(finish::<K>(pp, qq, pair));
     }
-    match classify::<K>(pp, qq, true) {
-        Meet::Disjoint => Separation::Disjoint(finish::<K>(pp, qq, brute_pair::<K>(pp, qq))),
-        Meet::Touching {
-            point,
-            feature_p,
-            feature_q,
-        } => Separation::Touching {
-            point,
-            feature_p,
-            feature_q,
-        },
-        Meet::Overlapping => Separation::Overlapping,
-    }
+    separation(classify::<K>(pp, qq, true), || {
+        finish::<K>(pp, qq, brute_pair::<K>(pp, qq))
+    })
 }
 
 /// [`distance_schwartz_with`] under the default [`Robust`] kernel.

@@ -23,7 +23,7 @@ use polydist_polygon::predicates::{Kernel, Robust, Sign};
 
 use crate::brute::brute_pair;
 use crate::extreme::{Nearest, extreme, extreme_left_of, extreme_right_of, nearest_feature};
-use crate::meet::{Meet, classify};
+use crate::meet::{classify, separation};
 use crate::pair::{Pair, at, canonical, certify, finish, nearer, prev};
 use crate::result::{Separation, bump};
 
@@ -413,22 +413,10 @@ pub fn distance_yang_with<K: Kernel>(pp: &ConvexPolygon, qq: &ConvexPolygon) -> 
             pair = again;
         }
     }
-    match classify::<K>(pp, qq, true) {
-        Meet::Disjoint => {
-            bump(|s| s.brute_fallbacks += 1);
-            Separation::Disjoint(finish::<K>(pp, qq, brute_pair::<K>(pp, qq)))
-        }
-        Meet::Touching {
-            point,
-            feature_p,
-            feature_q,
-        } => Separation::Touching {
-            point,
-            feature_p,
-            feature_q,
-        },
-        Meet::Overlapping => Separation::Overlapping,
-    }
+    separation(classify::<K>(pp, qq, true), || {
+        bump(|s| s.brute_fallbacks += 1);
+        finish::<K>(pp, qq, brute_pair::<K>(pp, qq))
+    })
 }
 
 /// The distance between two convex polygons (points and segments included) and their closest pair,

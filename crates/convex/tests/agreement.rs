@@ -3,29 +3,14 @@
 
 mod common;
 
-use common::{Worst, check_all};
+use common::{
+    RELATIONS, Worst, check_all, facing_pair, huge_offset_pair, lattice_point, merge, sliver_pair,
+};
 use glam::DVec2;
 use polydist_convex::polygon::predicates::{Exact, Robust};
 use polydist_convex::{reset_search_stats, search_stats};
-use polydist_oracle::{
-    Relation, SplitMix64, cocircular, convex_pair, parallel_facing, random_convex, sliver,
-};
+use polydist_oracle::{Relation, SplitMix64, cocircular, convex_pair};
 use proptest::prelude::*;
-
-const RELATIONS: [Relation; 12] = [
-    Relation::Far,
-    Relation::NearlyTouching { ulps: 1 },
-    Relation::NearlyTouching { ulps: 5 },
-    Relation::TouchingVertex,
-    Relation::TouchingEdge,
-    Relation::VertexOnEdge,
-    Relation::Overlapping,
-    Relation::Nested,
-    Relation::ParallelFacing,
-    Relation::HugeOffset,
-    Relation::Sliver,
-    Relation::CollinearInput,
-];
 
 fn report(name: &str, w: Worst) {
     let s = search_stats();
@@ -33,12 +18,6 @@ fn report(name: &str, w: Worst) {
         "{name}: max distance error {:.3} ulps, squared {:.3} ulps, foot {:.3} ulps; stats {s:?}",
         w.distance, w.squared, w.foot
     );
-}
-
-fn merge(a: &mut Worst, b: Worst) {
-    a.distance = a.distance.max(b.distance);
-    a.squared = a.squared.max(b.squared);
-    a.foot = a.foot.max(b.foot);
 }
 
 proptest! {
@@ -88,14 +67,11 @@ fn points_and_segments() {
     reset_search_stats();
     let mut worst = Worst::default();
     let mut rng = SplitMix64::new(11);
-    let lattice = |rng: &mut SplitMix64| {
-        DVec2::new(rng.range_i64(-50, 50) as f64, rng.range_i64(-50, 50) as f64)
-    };
     for round in 0..400 {
         let n = 3 + round % 30;
         let poly: Vec<DVec2> = polydist_oracle::random_convex_lattice(&mut rng, n.min(10), 40);
-        let a = lattice(&mut rng);
-        let b = lattice(&mut rng);
+        let a = lattice_point(&mut rng);
+        let b = lattice_point(&mut rng);
         let v = poly[rng.index(poly.len())];
         let w = poly[(rng.index(poly.len()) + 1) % poly.len()];
         let mid = (v + w) * 0.5;
@@ -139,11 +115,9 @@ fn exact_ties_and_hard_numbers() {
     let mut worst = Worst::default();
     let mut rng = SplitMix64::new(3);
     for k in 0..60 {
-        let d = (rng.range_i64(-40, 40), rng.range_i64(-40, 40));
-        if d == (0, 0) {
+        let Some(f) = facing_pair(&mut rng, k) else {
             continue;
-        }
-        let f = parallel_facing(&mut rng, 3 + k % 40, d, f64::from(1 + k as u32 % 3));
+        };
         merge(&mut worst, check_all::<Robust>(&f.p, &f.q, true));
     }
     // Co-circular vertices: two copies of a circle polygon, one shifted by an exact integer amount.
@@ -161,14 +135,9 @@ fn exact_ties_and_hard_numbers() {
     }
     // Slivers and huge offsets from the generators at larger sizes.
     for n in [16, 50, 120] {
-        let a = sliver(&mut rng, n, 1e6);
-        let b: Vec<DVec2> = sliver(&mut rng, n, 1e3)
-            .iter()
-            .map(|&p| p + DVec2::new(0.5, 3.0))
-            .collect();
+        let (a, b) = sliver_pair(&mut rng, n);
         merge(&mut worst, check_all::<Robust>(&a, &b, false));
-        let c = random_convex(&mut rng, n, DVec2::new(1e12, -1e12), 1e3);
-        let d = random_convex(&mut rng, n, DVec2::new(1e12 + 2500.0, -1e12 + 700.0), 1e3);
+        let (c, d) = huge_offset_pair(&mut rng, n);
         merge(&mut worst, check_all::<Robust>(&c, &d, false));
         for rel in [
             Relation::HugeOffset,

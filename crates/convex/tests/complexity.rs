@@ -1,13 +1,13 @@
 //! Complexity by counting predicate calls (never timing): the search costs at most
 //! `C·(log₂n + log₂m) + K` predicates on disjoint polygons, and never falls back.
 
-use glam::DVec2;
+mod common;
+
+use common::{counted, disjoint_pair};
 use polydist_convex::polygon::ConvexPolygon;
-use polydist_convex::polygon::predicates::{
-    Counted, Robust, predicate_counts, reset_predicate_counts,
-};
+use polydist_convex::polygon::predicates::{Counted, Robust};
 use polydist_convex::{distance_yang_with, reset_search_stats, search_stats};
-use polydist_oracle::{SplitMix64, random_convex};
+use polydist_oracle::SplitMix64;
 
 /// Predicates per `log₂n + log₂m` (measured: see the test's output and the docs).
 const C: f64 = 13.0;
@@ -24,19 +24,12 @@ fn predicate_count_is_logarithmic() {
         let mut max_count = 0;
         for trial in 0..12 {
             let m = if trial % 2 == 0 { n } else { 8 + rng.index(n) };
-            let p = random_convex(&mut rng, n, DVec2::ZERO, 1.0);
-            let angle = rng.unit_f64() * std::f64::consts::TAU;
-            let dist = 4.0 + 3.0 * rng.unit_f64();
-            let center = DVec2::new(angle.cos(), angle.sin()) * dist;
-            let radius = 0.5 + rng.unit_f64();
-            let q = random_convex(&mut rng, m, center, radius);
+            let (p, q) = disjoint_pair(&mut rng, n, m);
             let (pp, qq) = (
                 ConvexPolygon::try_new(&p).expect("valid"),
                 ConvexPolygon::try_new(&q).expect("valid"),
             );
-            reset_predicate_counts();
-            let s = distance_yang_with::<Counted<Robust>>(&pp, &qq);
-            let count = predicate_counts().total();
+            let (s, count) = counted(|| distance_yang_with::<Counted<Robust>>(&pp, &qq));
             let logs = (pp.len() as f64).log2() + (qq.len() as f64).log2();
             if s.closest().is_some() {
                 assert!(

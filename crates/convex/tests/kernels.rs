@@ -1,11 +1,12 @@
 //! Inexact kernels: the Fast kernel may pick wrong features on hard input; a kernel answering random
 //! signs must still terminate within the loop bound, without panicking.
 
-use core::cell::Cell;
+mod common;
 
+use common::{Chaos, chaos_pair, seed_chaos, to_oracle};
 use glam::DVec2;
 use polydist_convex::polygon::ConvexPolygon;
-use polydist_convex::polygon::predicates::{Fast, Kernel, Polynomial, Sign};
+use polydist_convex::polygon::predicates::Fast;
 use polydist_convex::{
     Separation, distance_brute, distance_to_point, distance_with, distance_yang_with,
     reset_search_stats, search_stats,
@@ -14,46 +15,13 @@ use polydist_oracle::{
     Contact, Relation, SplitMix64, contact_status_convex, convex_distance, convex_pair,
 };
 
-std::thread_local! {
-    static CHAOS: Cell<u64> = const { Cell::new(0x9e37_79b9_7f4a_7c15) };
-}
-
-/// A kernel whose every sign is pseudo-random (SplitMix64 on a thread-local state).
-#[derive(Clone, Copy, Debug, Default)]
-struct Chaos;
-
-impl Kernel for Chaos {
-    const NAME: &'static str = "chaos";
-    const EXACT_DECISIONS: bool = false;
-    fn sign<const N: usize, P: Polynomial<N> + ?Sized>(_: &P, _: &[f64; N]) -> Sign {
-        CHAOS.with(|c| {
-            let mut z = c.get().wrapping_add(0x9e37_79b9_7f4a_7c15);
-            c.set(z);
-            z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-            z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-            match (z ^ (z >> 31)) % 3 {
-                0 => Sign::Negative,
-                1 => Sign::Zero,
-                _ => Sign::Positive,
-            }
-        })
-    }
-}
-
 #[test]
 fn chaos_kernel_terminates_within_the_bound_without_panicking() {
+    seed_chaos(0x9e37_79b9_7f4a_7c15);
     let mut rng = SplitMix64::new(5);
     let mut searches = 0;
     for round in 0..3000 {
-        let n = 3 + rng.index(if round % 10 == 0 { 2000 } else { 40 });
-        let m = 3 + rng.index(40);
-        let rel = [
-            Relation::Far,
-            Relation::Overlapping,
-            Relation::TouchingEdge,
-            Relation::ParallelFacing,
-        ][round % 4];
-        let pair = convex_pair(&mut rng, n, m, rel);
+        let (n, m, pair) = chaos_pair(&mut rng, round);
         let p = ConvexPolygon::try_new(&pair.p).expect("valid");
         let q = ConvexPolygon::try_new(&pair.q).expect("valid");
         reset_search_stats();
@@ -112,11 +80,4 @@ fn fast_kernel_on_hard_cases_terminates() {
     }
     println!("fast kernel: {wrong} wrong answers out of {total} hard cases");
     let _ = DVec2::ZERO;
-}
-
-fn to_oracle(f: polydist_convex::polygon::Feature) -> polydist_oracle::Feature {
-    match f {
-        polydist_convex::polygon::Feature::Vertex(i) => polydist_oracle::Feature::Vertex(i),
-        polydist_convex::polygon::Feature::Edge(i) => polydist_oracle::Feature::Edge(i),
-    }
 }

@@ -4,37 +4,20 @@
 
 mod common;
 
-use core::cell::Cell;
-
-use common::{Worst, check_answer};
+use common::{
+    Chaos, RELATIONS, Worst, chaos_pair, check_answer, counted, disjoint_pair, exact_swapped,
+    facing_pair, huge_offset_pair, lattice_point, merge, seed_chaos, sliver_pair,
+};
 use glam::DVec2;
 use polydist_convex::polygon::ConvexPolygon;
-use polydist_convex::polygon::predicates::{
-    Counted, Exact, Kernel, Polynomial, Robust, Sign, predicate_counts, reset_predicate_counts,
-};
+use polydist_convex::polygon::predicates::{Counted, Exact, Kernel, Robust};
 use polydist_convex::{
     Separation, distance_brute, distance_schwartz, distance_schwartz_with, distance_yang_with,
 };
 use polydist_oracle::{
-    Contact, ExactDistance, Relation, SplitMix64, cocircular, contact_status_convex,
-    convex_distance, convex_pair, parallel_facing, random_convex, random_convex_lattice, sliver,
-    ulp_distance,
+    Contact, SplitMix64, cocircular, contact_status_convex, convex_distance, convex_pair,
+    random_convex_lattice, ulp_distance,
 };
-
-const RELATIONS: [Relation; 12] = [
-    Relation::Far,
-    Relation::NearlyTouching { ulps: 1 },
-    Relation::NearlyTouching { ulps: 5 },
-    Relation::TouchingVertex,
-    Relation::TouchingEdge,
-    Relation::VertexOnEdge,
-    Relation::Overlapping,
-    Relation::Nested,
-    Relation::ParallelFacing,
-    Relation::HugeOffset,
-    Relation::Sliver,
-    Relation::CollinearInput,
-];
 
 /// Predicates per `log₂n·log₂m` on disjoint pairs (the measured worst is printed by the tests).
 const C: f64 = 14.0;
@@ -62,9 +45,7 @@ struct Stats {
 
 impl Stats {
     fn merge(&mut self, w: Worst) {
-        self.worst.distance = self.worst.distance.max(w.distance);
-        self.worst.squared = self.worst.squared.max(w.squared);
-        self.worst.foot = self.worst.foot.max(w.foot);
+        merge(&mut self.worst, w);
     }
 }
 
@@ -104,7 +85,7 @@ fn check<Kern: Kernel>(p: &[DVec2], q: &[DVec2], brute: bool, stats: &mut Stats)
     stats.merge(check_answer(
         q,
         p,
-        &swap(&exact),
+        &exact_swapped(&exact),
         contact,
         &swapped,
         "schwartz swapped",
@@ -122,9 +103,8 @@ fn check<Kern: Kernel>(p: &[DVec2], q: &[DVec2], brute: bool, stats: &mut Stats)
     stats.pairs += 1;
     if contact == Contact::Disjoint {
         stats.disjoint += 1;
-        reset_predicate_counts();
-        let _ = distance_schwartz_with::<Counted<Robust>>(&pp, &qq);
-        let count = predicate_counts().total() as f64;
+        let (_, count) = counted(|| distance_schwartz_with::<Counted<Robust>>(&pp, &qq));
+        let count = count as f64;
         let limit = bound(pp.len(), qq.len());
         assert!(
             count <= limit,
@@ -133,15 +113,6 @@ fn check<Kern: Kernel>(p: &[DVec2], q: &[DVec2], brute: bool, stats: &mut Stats)
             qq.len()
         );
         stats.max_count_ratio = stats.max_count_ratio.max(count / limit);
-    }
-}
-
-fn swap(e: &ExactDistance) -> ExactDistance {
-    let mut pairs: Vec<_> = e.pairs.iter().map(|&(a, b)| (b, a)).collect();
-    pairs.sort();
-    ExactDistance {
-        sq: e.sq.clone(),
-        pairs,
     }
 }
 
@@ -174,12 +145,9 @@ fn every_relation_against_oracle_brute_and_yang() {
 fn points_and_segments() {
     let mut stats = Stats::default();
     let mut rng = SplitMix64::new(11);
-    let lattice = |rng: &mut SplitMix64| {
-        DVec2::new(rng.range_i64(-50, 50) as f64, rng.range_i64(-50, 50) as f64)
-    };
     for round in 0..250 {
         let poly: Vec<DVec2> = random_convex_lattice(&mut rng, 3 + round % 8, 40);
-        let (a, b) = (lattice(&mut rng), lattice(&mut rng));
+        let (a, b) = (lattice_point(&mut rng), lattice_point(&mut rng));
         let v = poly[rng.index(poly.len())];
         let w = poly[(rng.index(poly.len()) + 1) % poly.len()];
         let mid = (v + w) * 0.5;
@@ -216,11 +184,9 @@ fn exact_ties_and_hard_numbers() {
     let mut stats = Stats::default();
     let mut rng = SplitMix64::new(3);
     for k in 0..80 {
-        let d = (rng.range_i64(-40, 40), rng.range_i64(-40, 40));
-        if d == (0, 0) {
+        let Some(f) = facing_pair(&mut rng, k) else {
             continue;
-        }
-        let f = parallel_facing(&mut rng, 3 + k % 40, d, f64::from(1 + k as u32 % 3));
+        };
         check::<Robust>(&f.p, &f.q, true, &mut stats);
     }
     for k in 1..5 {
@@ -256,14 +222,9 @@ fn exact_ties_and_hard_numbers() {
         }
     }
     for n in [16, 50, 120] {
-        let a = sliver(&mut rng, n, 1e6);
-        let b: Vec<DVec2> = sliver(&mut rng, n, 1e3)
-            .iter()
-            .map(|&p| p + DVec2::new(0.5, 3.0))
-            .collect();
+        let (a, b) = sliver_pair(&mut rng, n);
         check::<Robust>(&a, &b, false, &mut stats);
-        let c = random_convex(&mut rng, n, DVec2::new(1e12, -1e12), 1e3);
-        let d = random_convex(&mut rng, n, DVec2::new(1e12 + 2500.0, -1e12 + 700.0), 1e3);
+        let (c, d) = huge_offset_pair(&mut rng, n);
         check::<Robust>(&c, &d, false, &mut stats);
     }
     println!("ties: {stats:?}");
@@ -279,19 +240,12 @@ fn predicate_count_is_log_squared() {
         let mut max_count = 0;
         for trial in 0..8 {
             let m = if trial % 2 == 0 { n } else { 8 + rng.index(n) };
-            let p = random_convex(&mut rng, n, DVec2::ZERO, 1.0);
-            let angle = rng.unit_f64() * std::f64::consts::TAU;
-            let dist = 4.0 + 3.0 * rng.unit_f64();
-            let center = DVec2::new(angle.cos(), angle.sin()) * dist;
-            let radius = 0.5 + rng.unit_f64();
-            let q = random_convex(&mut rng, m, center, radius);
+            let (p, q) = disjoint_pair(&mut rng, n, m);
             let (pp, qq) = (
                 ConvexPolygon::try_new(&p).expect("valid"),
                 ConvexPolygon::try_new(&q).expect("valid"),
             );
-            reset_predicate_counts();
-            let s = distance_schwartz_with::<Counted<Robust>>(&pp, &qq);
-            let count = predicate_counts().total();
+            let (s, count) = counted(|| distance_schwartz_with::<Counted<Robust>>(&pp, &qq));
             assert!(s.closest().is_some(), "disjoint by construction");
             let limit = bound(pp.len(), qq.len());
             assert!(
@@ -310,45 +264,12 @@ fn predicate_count_is_log_squared() {
     println!("worst (count − {K}) / (log₂n·log₂m) = {worst:.2} (C = {C})");
 }
 
-std::thread_local! {
-    static CHAOS: Cell<u64> = const { Cell::new(0x1234_5678_9abc_def0) };
-}
-
-/// A kernel whose every sign is pseudo-random.
-#[derive(Clone, Copy, Debug, Default)]
-struct Chaos;
-
-impl Kernel for Chaos {
-    const NAME: &'static str = "chaos";
-    const EXACT_DECISIONS: bool = false;
-    fn sign<const N: usize, P: Polynomial<N> + ?Sized>(_: &P, _: &[f64; N]) -> Sign {
-        CHAOS.with(|c| {
-            let mut z = c.get().wrapping_add(0x9e37_79b9_7f4a_7c15);
-            c.set(z);
-            z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-            z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-            match (z ^ (z >> 31)) % 3 {
-                0 => Sign::Negative,
-                1 => Sign::Zero,
-                _ => Sign::Positive,
-            }
-        })
-    }
-}
-
 #[test]
 fn random_sign_kernel_terminates_without_panicking() {
+    seed_chaos(0x1234_5678_9abc_def0);
     let mut rng = SplitMix64::new(5);
     for round in 0..2000 {
-        let n = 3 + rng.index(if round % 10 == 0 { 2000 } else { 40 });
-        let m = 3 + rng.index(40);
-        let rel = [
-            Relation::Far,
-            Relation::Overlapping,
-            Relation::TouchingEdge,
-            Relation::ParallelFacing,
-        ][round % 4];
-        let pair = convex_pair(&mut rng, n, m, rel);
+        let (_, _, pair) = chaos_pair(&mut rng, round);
         let p = ConvexPolygon::try_new(&pair.p).expect("valid");
         let q = ConvexPolygon::try_new(&pair.q).expect("valid");
         let _ = distance_schwartz_with::<Chaos>(&p, &q);

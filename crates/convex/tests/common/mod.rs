@@ -2,13 +2,35 @@
 
 #![allow(dead_code, reason = "each test binary uses a subset")]
 
+use core::cell::Cell;
+
 use glam::DVec2;
-use polydist_convex::polygon::predicates::{BigInt, BigRational, Kernel};
+use polydist_convex::polygon::predicates::{
+    BigInt, BigRational, Kernel, Polynomial, Sign, predicate_counts, reset_predicate_counts,
+};
 use polydist_convex::polygon::{ConvexPolygon, Feature};
 use polydist_convex::{Separation, distance_brute, distance_with, distance_yang_with};
 use polydist_oracle::{
-    Contact, ExactDistance, contact_status_convex, convex_distance, ulps_error, ulps_error_sqrt,
+    Contact, ConvexPair, ExactDistance, FacingPair, Relation, SplitMix64, contact_status_convex,
+    convex_distance, convex_pair, parallel_facing, random_convex, sliver, ulps_error,
+    ulps_error_sqrt,
 };
+
+/// Every relation the generator builds.
+pub(crate) const RELATIONS: [Relation; 12] = [
+    Relation::Far,
+    Relation::NearlyTouching { ulps: 1 },
+    Relation::NearlyTouching { ulps: 5 },
+    Relation::TouchingVertex,
+    Relation::TouchingEdge,
+    Relation::VertexOnEdge,
+    Relation::Overlapping,
+    Relation::Nested,
+    Relation::ParallelFacing,
+    Relation::HugeOffset,
+    Relation::Sliver,
+    Relation::CollinearInput,
+];
 
 /// The worst numeric errors seen, in ulps.
 #[derive(Clone, Copy, Debug, Default)]
@@ -16,6 +38,13 @@ pub(crate) struct Worst {
     pub(crate) distance: f64,
     pub(crate) squared: f64,
     pub(crate) foot: f64,
+}
+
+/// Keeps in `a` the worse of each error.
+pub(crate) fn merge(a: &mut Worst, b: Worst) {
+    a.distance = a.distance.max(b.distance);
+    a.squared = a.squared.max(b.squared);
+    a.foot = a.foot.max(b.foot);
 }
 
 /// The witness `x` on the caller's feature `f` of `v`: a vertex exactly, or the foot of `other` (a
@@ -124,11 +153,7 @@ pub(crate) fn check_all<K: Kernel>(p: &[DVec2], q: &[DVec2], brute: bool) -> Wor
     let exact = convex_distance(p, q);
     let contact = contact_status_convex(p, q);
     let mut worst = Worst::default();
-    let mut take = |w: Worst| {
-        worst.distance = worst.distance.max(w.distance);
-        worst.squared = worst.squared.max(w.squared);
-        worst.foot = worst.foot.max(w.foot);
-    };
+    let mut take = |w: Worst| merge(&mut worst, w);
     take(check_answer(
         p,
         q,
@@ -167,11 +192,114 @@ pub(crate) fn check_all<K: Kernel>(p: &[DVec2], q: &[DVec2], brute: bool) -> Wor
     worst
 }
 
-fn exact_swapped(e: &ExactDistance) -> ExactDistance {
+/// `e` for the swapped polygons: every optimal pair swapped.
+pub(crate) fn exact_swapped(e: &ExactDistance) -> ExactDistance {
     let mut pairs: Vec<_> = e.pairs.iter().map(|&(a, b)| (b, a)).collect();
     pairs.sort();
     ExactDistance {
         sq: e.sq.clone(),
         pairs,
+    }
+}
+
+/// A point with integer coordinates in `[-50, 50]²`.
+pub(crate) fn lattice_point(rng: &mut SplitMix64) -> DVec2 {
+    DVec2::new(rng.range_i64(-50, 50) as f64, rng.range_i64(-50, 50) as f64)
+}
+
+/// A convex `n`-gon of radius 1 around the origin and a convex `m`-gon of radius `0.5..1.5` centred
+/// `4..7` away in a random direction: disjoint by construction.
+pub(crate) fn disjoint_pair(rng: &mut SplitMix64, n: usize, m: usize) -> (Vec<DVec2>, Vec<DVec2>) {
+    let p = random_convex(rng, n, DVec2::ZERO, 1.0);
+    let angle = rng.unit_f64() * std::f64::consts::TAU;
+    let dist = 4.0 + 3.0 * rng.unit_f64();
+    let center = DVec2::new(angle.cos(), angle.sin()) * dist;
+    let radius = 0.5 + rng.unit_f64();
+    let q = random_convex(rng, m, center, radius);
+    (p, q)
+}
+
+/// `f`'s answer and how many predicates it evaluated (under a `Counted` kernel).
+pub(crate) fn counted(f: impl FnOnce() -> Separation) -> (Separation, u64) {
+    reset_predicate_counts();
+    let s = f();
+    (s, predicate_counts().total())
+}
+
+/// Parallel facing edges along a random integer direction (`None` for the zero direction), case `k`:
+/// `3 + k % 40` vertices, gap `1 + k % 3`.
+pub(crate) fn facing_pair(rng: &mut SplitMix64, k: usize) -> Option<FacingPair> {
+    let d = (rng.range_i64(-40, 40), rng.range_i64(-40, 40));
+    if d == (0, 0) {
+        return None;
+    }
+    Some(parallel_facing(
+        rng,
+        3 + k % 40,
+        d,
+        f64::from(1 + k as u32 % 3),
+    ))
+}
+
+/// The sizes and pair of round `round` of the random-sign tests: `n` up to 2002 every tenth round
+/// (else up to 42), `m` up to 42, in one of four relations.
+pub(crate) fn chaos_pair(rng: &mut SplitMix64, round: usize) -> (usize, usize, ConvexPair) {
+    let n = 3 + rng.index(if round % 10 == 0 { 2000 } else { 40 });
+    let m = 3 + rng.index(40);
+    let rel = [
+        Relation::Far,
+        Relation::Overlapping,
+        Relation::TouchingEdge,
+        Relation::ParallelFacing,
+    ][round % 4];
+    (n, m, convex_pair(rng, n, m, rel))
+}
+
+/// Two `n`-vertex slivers (aspect `1e6` and `1e3`), the second shifted by `(0.5, 3)`.
+pub(crate) fn sliver_pair(rng: &mut SplitMix64, n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
+    let a = sliver(rng, n, 1e6);
+    let b: Vec<DVec2> = sliver(rng, n, 1e3)
+        .iter()
+        .map(|&p| p + DVec2::new(0.5, 3.0))
+        .collect();
+    (a, b)
+}
+
+/// Two `n`-gons of radius `1e3` near `(1e12, -1e12)`, `(2500, 700)` apart.
+pub(crate) fn huge_offset_pair(rng: &mut SplitMix64, n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
+    let c = random_convex(rng, n, DVec2::new(1e12, -1e12), 1e3);
+    let d = random_convex(rng, n, DVec2::new(1e12 + 2500.0, -1e12 + 700.0), 1e3);
+    (c, d)
+}
+
+std::thread_local! {
+    static CHAOS: Cell<u64> = const { Cell::new(0x9e37_79b9_7f4a_7c15) };
+}
+
+/// Sets the state of [`Chaos`] on this thread.
+pub(crate) fn seed_chaos(seed: u64) {
+    CHAOS.with(|c| c.set(seed));
+}
+
+/// A kernel whose every sign is pseudo-random (SplitMix64 on a thread-local state, see
+/// [`seed_chaos`]).
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Chaos;
+
+impl Kernel for Chaos {
+    const NAME: &'static str = "chaos";
+    const EXACT_DECISIONS: bool = false;
+    fn sign<const N: usize, P: Polynomial<N> + ?Sized>(_: &P, _: &[f64; N]) -> Sign {
+        CHAOS.with(|c| {
+            let mut z = c.get().wrapping_add(0x9e37_79b9_7f4a_7c15);
+            c.set(z);
+            z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+            z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+            match (z ^ (z >> 31)) % 3 {
+                0 => Sign::Negative,
+                1 => Sign::Zero,
+                _ => Sign::Positive,
+            }
+        })
     }
 }
