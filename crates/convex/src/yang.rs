@@ -23,7 +23,8 @@ use polydist_polygon::predicates::{Kernel, Robust, Sign};
 
 use crate::brute::brute_pair;
 use crate::extreme::{Nearest, extreme, extreme_left_of, extreme_right_of, nearest_feature};
-use crate::meet::{classify, separation};
+use crate::hint::Solved;
+use crate::meet::classify;
 use crate::pair::{Pair, at, canonical, certify, finish, nearer, prev};
 use crate::result::{Separation, bump};
 
@@ -39,7 +40,7 @@ use crate::result::{Separation, bump};
 pub const SCAN_BELOW: usize = 9;
 
 /// How many reseeded searches follow a failed certificate before the exact contact test.
-const RESEEDS: usize = 2;
+pub(crate) const RESEEDS: usize = 2;
 
 /// `⌈log₂ x⌉` for `x ≥ 1`.
 fn ceil_log2(x: usize) -> u32 {
@@ -178,7 +179,7 @@ fn table1<K: Kernel>(p: &[DVec2], q: &[DVec2], a: usize, b: usize) -> Cell {
 /// A direction `l` (the "up" direction of the median line), given by input points so that every
 /// comparison along it is an exact degree-2 sign.
 #[derive(Clone, Copy, Debug)]
-enum Up {
+pub(crate) enum Up {
     /// `l = rot90(t − o)`: the left normal of the seed vector `t − o` (from `P` towards `Q`).
     LeftOf(DVec2, DVec2),
     /// `l = t − o`.
@@ -195,7 +196,7 @@ impl Up {
     }
 
     /// The direction `l_w = rot90(w)` of the canonical pair's vector `w = q* − p*`, from input points.
-    fn of_pair<K: Kernel>(p: &[DVec2], q: &[DVec2], pair: Pair) -> Up {
+    pub(crate) fn of_pair<K: Kernel>(p: &[DVec2], q: &[DVec2], pair: Pair) -> Up {
         match pair {
             Pair::Vv(i, j) => Up::LeftOf(at(p, i), at(q, j)),
             Pair::Ve(i, j) => {
@@ -222,7 +223,7 @@ impl Up {
 
 /// The main search (notes §3) on the chains facing the direction `rot−90(l)` (notes §4).
 /// Returns a candidate pair (not yet certified) and the iterations used.
-fn search<K: Kernel>(p: &[DVec2], q: &[DVec2], up: Up) -> (Pair, u32) {
+pub(crate) fn search<K: Kernel>(p: &[DVec2], q: &[DVec2], up: Up) -> (Pair, u32) {
     let (n, m) = (p.len(), q.len());
     // Initial ranges: P' = CCW chain from the lowest to the highest vertex along l; Q' = CCW chain of Q
     // from its highest to its lowest. With l = rot90(t − o) for any o ∈ P, t ∈ Q of disjoint polygons,
@@ -325,7 +326,7 @@ fn segment_polygon<K: Kernel>(s: &[DVec2], q: &[DVec2]) -> Option<Pair> {
 }
 
 /// The first candidate pair, or `None` when a seed point lies in the other polygon (they meet).
-fn candidate<K: Kernel>(pp: &ConvexPolygon, qq: &ConvexPolygon) -> Option<Pair> {
+pub(crate) fn candidate<K: Kernel>(pp: &ConvexPolygon, qq: &ConvexPolygon) -> Option<Pair> {
     let (p, q) = (pp.vertices(), qq.vertices());
     let (n, m) = (p.len(), q.len());
     let pair = match (n, m) {
@@ -388,12 +389,17 @@ fn candidate<K: Kernel>(pp: &ConvexPolygon, qq: &ConvexPolygon) -> Option<Pair> 
 /// polygons", J. Algorithms 6, 1985.
 #[must_use]
 pub fn distance_yang_with<K: Kernel>(pp: &ConvexPolygon, qq: &ConvexPolygon) -> Separation {
+    solve_yang::<K>(pp, qq).separation()
+}
+
+/// [`distance_yang_with`], also returning the certified internal pair (for hints and `within`).
+pub(crate) fn solve_yang<K: Kernel>(pp: &ConvexPolygon, qq: &ConvexPolygon) -> Solved {
     let (p, q) = (pp.vertices(), qq.vertices());
     bump(|s| s.calls += 1);
     let first = candidate::<K>(pp, qq);
     if let Some(pair) = first {
         if certify::<K>(p, q, pair) {
-            return Separation::Disjoint(finish::<K>(pp, qq, pair));
+            return Solved::Disjoint(finish::<K>(pp, qq, pair), pair);
         }
     }
     bump(|s| s.certificate_failures += 1);
@@ -405,7 +411,7 @@ pub fn distance_yang_with<K: Kernel>(pp: &ConvexPolygon, qq: &ConvexPolygon) -> 
             let again = canonical::<K>(p, q, again);
             if certify::<K>(p, q, again) {
                 bump(|s| s.repaired_by_retry += 1);
-                return Separation::Disjoint(finish::<K>(pp, qq, again));
+                return Solved::Disjoint(finish::<K>(pp, qq, again), again);
             }
             if again == pair {
                 break;
@@ -413,9 +419,9 @@ pub fn distance_yang_with<K: Kernel>(pp: &ConvexPolygon, qq: &ConvexPolygon) -> 
             pair = again;
         }
     }
-    separation(classify::<K>(pp, qq, true), || {
+    Solved::from_meet::<K>(pp, qq, classify::<K>(pp, qq, true), || {
         bump(|s| s.brute_fallbacks += 1);
-        finish::<K>(pp, qq, brute_pair::<K>(pp, qq))
+        brute_pair::<K>(pp, qq)
     })
 }
 
