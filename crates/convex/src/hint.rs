@@ -5,7 +5,7 @@
 //! `parallel` is the only optimal canonical pair (for disjoint convex polygons the closest points are
 //! unique unless both support faces are edges), so the walk and the search finish the same pair with
 //! the same construction. A walk ending at a `parallel` pair is discarded: the search decides which of
-//! the optimal pairs to report. The fallback ([`solve`]) repeats `distance_yang_with` step by step,
+//! the optimal pairs to report. The fallback ([`solve`]) is the plain query's own code (`yang::solve_yang`),
 //! returning the pair as well.
 
 use glam::DVec2;
@@ -92,8 +92,8 @@ impl Solved {
     }
 }
 
-/// [`distance_with`](crate::distance_with) step by step (the scan below [`SCAN_BELOW`], else
-/// `distance_yang_with`: candidate, certificate, reseeds, contact test, brute force, with the same
+/// [`distance_with`](crate::distance_with)'s own code (the scan below [`SCAN_BELOW`], else
+/// `solve_yang`, shared with `distance_yang_with`: candidate, certificate, reseeds, contact test, brute force, with the same
 /// statistics), also returning the pair. The tests check that both agree.
 pub(crate) fn solve<K: Kernel>(pp: &ConvexPolygon, qq: &ConvexPolygon) -> Solved {
     if pp.len() * qq.len() < SCAN_BELOW {

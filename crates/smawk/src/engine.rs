@@ -1,9 +1,12 @@
 //! The SMAWK engine: row minima of a totally monotone matrix, iteratively and without per-level
 //! allocation.
 //!
-//! The engine sees the matrix as a fallible lookup `(row, column) -> Result<T, E>` and a strict
-//! order `less(a, b)`; the public functions build both (the `f64` ones check for NaN in the lookup,
-//! the others use `E = Infallible`).
+//! The engine sees the matrix as a lookup `(row, column) -> T` and a strict order `less(a, b)`,
+//! plus a [`Poison`] test for entries that invalidate the search (NaN for `f64`). Poisoned entries
+//! are not reported where they are met: each function ORs the test into a local flag and returns
+//! it, so the hot loops stay free of early exits (which would stop the compiler from pairing
+//! independent lookups, e.g. two square roots in one instruction). The `f64` functions run the
+//! search again to locate the first NaN in the rare case the flag is set.
 //!
 //! SMAWK(R, C) reduces the columns C to at most |R| candidates C' (REDUCE), recurses on the odd
 //! rows of R with C', and then fills in the even rows by scanning C' between the minima of their
@@ -106,32 +109,59 @@ impl List for Stored {
     }
 }
 
+/// Entries that invalidate a search when looked up.
+pub(crate) trait Poison<T> {
+    /// Whether `value` is poisoned.
+    fn test(value: &T) -> bool;
+}
+
+/// No entry is poisoned.
+pub(crate) struct Clean;
+
+impl<T> Poison<T> for Clean {
+    #[inline(always)]
+    fn test(_value: &T) -> bool {
+        false
+    }
+}
+
+/// NaN is poisoned.
+pub(crate) struct Nan;
+
+impl Poison<f64> for Nan {
+    #[inline(always)]
+    fn test(value: &f64) -> bool {
+        value.is_nan()
+    }
+}
+
 /// Row minima of the `rows` × `columns` matrix `lookup`, leftmost on ties, written to
 /// `argmin[..rows]`. With `VALUES`, `sink(row, value)` receives each row's minimum value once;
 /// without, `sink` is never called, and a row whose minimum is forced (a single candidate left)
-/// costs no lookup.
+/// costs no lookup. Returns whether any entry looked up was poisoned (then the result is
+/// meaningless, but still one valid column per row).
 ///
 /// Requires `argmin.len() >= rows`. For a totally monotone matrix the result is exact; for any
 /// other matrix it is some column index per row, without panics.
 ///
 /// Lookups: at most `3 * columns + 12 * rows` for any matrix (see `docs/algorithms/smawk.md`).
-pub(crate) fn smawk_into<T, E, const VALUES: bool>(
+pub(crate) fn smawk_into<T, P: Poison<T>, const VALUES: bool>(
     rows: usize,
     columns: usize,
-    lookup: &mut impl FnMut(usize, usize) -> Result<T, E>,
+    lookup: &mut impl FnMut(usize, usize) -> T,
     less: &mut impl FnMut(&T, &T) -> bool,
     argmin: &mut [usize],
     sink: &mut impl FnMut(usize, T),
     ws: &mut Workspace<T>,
-) -> Result<(), E> {
+) -> bool {
     if rows == 0 || columns == 0 {
-        return Ok(());
+        return false;
     }
     if rows
         .checked_mul(columns)
         .is_some_and(|area| area <= SCAN_AREA)
     {
-        return scan_into(rows, columns, lookup, less, argmin, sink);
+        return scan_into::<T, P>(rows, columns, lookup, less, argmin, sink);
     }
     // A list REDUCEd at level l has at most min(rows >> l, columns) candidates, and each level
     // stores at most one.
@@ -145,9 +175,10 @@ pub(crate) fn smawk_into<T, E, const VALUES: bool>(
     ws.values.clear();
     ws.values.reserve(rows);
 
+    let mut poisoned = false;
     let mut levels = [Level::default(); usize::BITS as usize + 1];
     levels[0] = if columns > rows.saturating_mul(SLACK) {
-        reduce(&AllColumns, columns, 0, rows, lookup, less, ws)?;
+        poisoned |= reduce::<T, P>(&AllColumns, columns, 0, rows, lookup, less, ws);
         Level {
             start: 0,
             len: ws.columns.len(),
@@ -171,8 +202,8 @@ pub(crate) fn smawk_into<T, E, const VALUES: bool>(
         let level_rows = rows >> level;
         levels[level as usize] = if parent.len > level_rows * SLACK {
             let start = ws.columns.len();
-            if parent.stored {
-                reduce(
+            poisoned |= if parent.stored {
+                reduce::<T, P>(
                     &Stored(parent.start),
                     parent.len,
                     level,
@@ -180,10 +211,10 @@ pub(crate) fn smawk_into<T, E, const VALUES: bool>(
                     lookup,
                     less,
                     ws,
-                )?;
+                )
             } else {
-                reduce(&AllColumns, parent.len, level, level_rows, lookup, less, ws)?;
-            }
+                reduce::<T, P>(&AllColumns, parent.len, level, level_rows, lookup, less, ws)
+            };
             Level {
                 start,
                 len: ws.columns.len() - start,
@@ -203,8 +234,8 @@ pub(crate) fn smawk_into<T, E, const VALUES: bool>(
     let mut from = 0;
     for k in 0..rows >> level {
         let row = row_of(level, k);
-        from = if last.stored {
-            scan::<T, E, VALUES>(
+        let (pos, bad) = if last.stored {
+            scan::<T, P, VALUES>(
                 row,
                 &Stored(last.start),
                 &ws.columns,
@@ -213,9 +244,9 @@ pub(crate) fn smawk_into<T, E, const VALUES: bool>(
                 lookup,
                 less,
                 sink,
-            )?
+            )
         } else {
-            scan::<T, E, VALUES>(
+            scan::<T, P, VALUES>(
                 row,
                 &AllColumns,
                 &ws.columns,
@@ -224,9 +255,11 @@ pub(crate) fn smawk_into<T, E, const VALUES: bool>(
                 lookup,
                 less,
                 sink,
-            )?
+            )
         };
-        argmin[row] = from;
+        poisoned |= bad;
+        argmin[row] = pos;
+        from = pos;
     }
 
     // Up: the even rows of each level, between the minima of the odd ones.
@@ -239,8 +272,8 @@ pub(crate) fn smawk_into<T, E, const VALUES: bool>(
         } else {
             &[]
         };
-        if list.stored {
-            interpolate::<T, E, VALUES>(
+        poisoned |= if list.stored {
+            interpolate::<T, P, VALUES>(
                 level,
                 rows,
                 list.len,
@@ -251,9 +284,9 @@ pub(crate) fn smawk_into<T, E, const VALUES: bool>(
                 less,
                 argmin,
                 sink,
-            )?;
+            )
         } else {
-            interpolate::<T, E, VALUES>(
+            interpolate::<T, P, VALUES>(
                 level,
                 rows,
                 list.len,
@@ -264,8 +297,8 @@ pub(crate) fn smawk_into<T, E, const VALUES: bool>(
                 less,
                 argmin,
                 sink,
-            )?;
-        }
+            )
+        };
     }
 
     // Positions in the level-0 list to columns.
@@ -276,26 +309,27 @@ pub(crate) fn smawk_into<T, E, const VALUES: bool>(
             *slot = list.get(*slot).copied().unwrap_or(0);
         }
     }
-    Ok(())
+    poisoned
 }
 
-/// Row minima by a plain scan of every entry; for small matrices and the brute-force twin.
-pub(crate) fn scan_into<T, E>(
+/// Row minima by a plain scan of every entry, for small matrices; returns whether an entry was
+/// poisoned.
+fn scan_into<T, P: Poison<T>>(
     rows: usize,
     columns: usize,
-    lookup: &mut impl FnMut(usize, usize) -> Result<T, E>,
+    lookup: &mut impl FnMut(usize, usize) -> T,
     less: &mut impl FnMut(&T, &T) -> bool,
     argmin: &mut [usize],
     sink: &mut impl FnMut(usize, T),
-) -> Result<(), E> {
-    if columns == 0 {
-        return Ok(());
-    }
+) -> bool {
+    let mut poisoned = false;
     for (row, slot) in argmin.iter_mut().enumerate().take(rows) {
-        let mut best = lookup(row, 0)?;
+        let mut best = lookup(row, 0);
+        poisoned |= P::test(&best);
         let mut best_column = 0;
         for column in 1..columns {
-            let value = lookup(row, column)?;
+            let value = lookup(row, column);
+            poisoned |= P::test(&value);
             if less(&value, &best) {
                 best = value;
                 best_column = column;
@@ -304,34 +338,64 @@ pub(crate) fn scan_into<T, E>(
         *slot = best_column;
         sink(row, best);
     }
-    Ok(())
+    poisoned
 }
 
 /// The position of the leftmost minimum of `row` over the list positions `from..=to`
-/// (`from <= to`, both in bounds); with `VALUES`, the minimum goes to `sink`. Without `VALUES` a
-/// single candidate costs no lookup.
+/// (`from <= to`, both in bounds), and whether a poisoned entry was met; with `VALUES`, the
+/// minimum goes to `sink`. Without `VALUES` a single candidate costs no lookup.
 #[inline(always)]
 #[expect(
     clippy::too_many_arguments,
     reason = "an internal helper, inlined into its three callers"
 )]
-fn scan<T, E, const VALUES: bool>(
+fn scan<T, P: Poison<T>, const VALUES: bool>(
     row: usize,
     list: &impl List,
     buffer: &[usize],
     from: usize,
     to: usize,
-    lookup: &mut impl FnMut(usize, usize) -> Result<T, E>,
+    lookup: &mut impl FnMut(usize, usize) -> T,
     less: &mut impl FnMut(&T, &T) -> bool,
     sink: &mut impl FnMut(usize, T),
-) -> Result<usize, E> {
+) -> (usize, bool) {
     if !VALUES && from == to {
-        return Ok(from);
+        return (from, false);
     }
     let mut best_pos = from;
-    let mut best = lookup(row, list.column(buffer, from))?;
-    for pos in from + 1..to + 1 {
-        let value = lookup(row, list.column(buffer, pos))?;
+    let mut best = lookup(row, list.column(buffer, from));
+    let mut poisoned = P::test(&best);
+    let mut pos = from + 1;
+    if to - from >= 8 {
+        // Long ranges: two interleaved running minima, so that each comparison waits for the
+        // previous-but-one instead of the previous one (and the two lookups can be paired);
+        // then the better of the two, the leftmost on a tie.
+        let mut other_pos = pos;
+        let mut other = lookup(row, list.column(buffer, pos));
+        poisoned |= P::test(&other);
+        pos += 1;
+        while pos < to {
+            let value = lookup(row, list.column(buffer, pos));
+            let next = lookup(row, list.column(buffer, pos + 1));
+            poisoned |= P::test(&value) | P::test(&next);
+            if less(&value, &best) {
+                best = value;
+                best_pos = pos;
+            }
+            if less(&next, &other) {
+                other = next;
+                other_pos = pos + 1;
+            }
+            pos += 2;
+        }
+        if less(&other, &best) || (!less(&best, &other) && other_pos < best_pos) {
+            best = other;
+            best_pos = other_pos;
+        }
+    }
+    for pos in pos..to + 1 {
+        let value = lookup(row, list.column(buffer, pos));
+        poisoned |= P::test(&value);
         if less(&value, &best) {
             best = value;
             best_pos = pos;
@@ -340,91 +404,114 @@ fn scan<T, E, const VALUES: bool>(
     if VALUES {
         sink(row, best);
     }
-    Ok(best_pos)
+    (best_pos, poisoned)
 }
 
 /// REDUCE: pushes onto the buffer the at most `level_rows` columns of the input list (with their
 /// input positions) that can still hold the leftmost minimum of some row of `level` (all of them,
-/// in a totally monotone matrix).
+/// in a totally monotone matrix); returns whether a poisoned entry was met.
 ///
 /// The stack's `k`-th column is the only candidate left for the `k`-th row among the columns
 /// popped or discarded so far; `ws.values[k]` caches its entry in that row, so each comparison
-/// costs one lookup, and a column that pops pushes with the entry its last comparison looked up.
-fn reduce<T, E>(
+/// costs one lookup, and a column that pops is pushed with the entry its last comparison looked
+/// up.
+fn reduce<T, P: Poison<T>>(
     input: &impl List,
     input_len: usize,
     level: u32,
     level_rows: usize,
-    lookup: &mut impl FnMut(usize, usize) -> Result<T, E>,
+    lookup: &mut impl FnMut(usize, usize) -> T,
     less: &mut impl FnMut(&T, &T) -> bool,
     ws: &mut Workspace<T>,
-) -> Result<(), E> {
+) -> bool {
     let base = ws.columns.len();
+    let capacity = level_rows.min(input_len);
+    ws.columns.resize(base + capacity, 0);
+    ws.parents.resize(base + capacity, 0);
+    let (inputs, stack) = ws.columns.split_at_mut(base);
+    let parents = &mut ws.parents[base..];
+    // `values[..depth]` are the stack's entries; anything after them is stale.
     let values = &mut ws.values;
     values.clear();
+    // The stack's k-th row is (k + 1) * step - 1.
+    let step = 1_usize << level;
+    let mut depth: usize = 0;
+    let mut poisoned = false;
     for index in 0..input_len {
-        let column = input.column(&ws.columns, index);
-        let depth = values.len();
-        let Some(top) = values.last() else {
-            values.push(lookup(row_of(level, 0), column)?);
-            ws.columns.push(column);
-            ws.parents.push(index);
-            continue;
+        let column = input.column(inputs, index);
+        let value = match depth.checked_sub(1).and_then(|top| values.get(top)) {
+            None => lookup(step - 1, column),
+            Some(top) => {
+                let mut row = depth * step - 1;
+                let value = lookup(row, column);
+                poisoned |= P::test(&value);
+                if !less(&value, top) {
+                    // The top keeps its row; `column` goes above it if there is a row left.
+                    if depth == capacity {
+                        continue;
+                    }
+                    lookup(row + step, column)
+                } else {
+                    // `column` is strictly better in the top's row, hence in every later row:
+                    // the top is dead for its own row and all later ones (earlier rows are
+                    // covered below it). Pop until `column` stops winning; it takes the last
+                    // freed row, with the entry already looked up.
+                    let mut value = value;
+                    depth -= 1;
+                    while let Some(top) = depth.checked_sub(1).and_then(|k| values.get(k)) {
+                        row -= step;
+                        let above = lookup(row, column);
+                        poisoned |= P::test(&above);
+                        if !less(&above, top) {
+                            break;
+                        }
+                        value = above;
+                        depth -= 1;
+                    }
+                    value
+                }
+            }
         };
-        let value = lookup(row_of(level, depth - 1), column)?;
-        if !less(&value, top) {
-            // The top keeps its row; `column` goes above it if there is a row left for it.
-            if depth < level_rows {
-                values.push(lookup(row_of(level, depth), column)?);
-                ws.columns.push(column);
-                ws.parents.push(index);
+        poisoned |= P::test(&value);
+        if let (Some(slot), Some(parent)) = (stack.get_mut(depth), parents.get_mut(depth)) {
+            *slot = column;
+            *parent = index;
+            if let Some(old) = values.get_mut(depth) {
+                *old = value;
+            } else {
+                values.push(value);
             }
-            continue;
+            depth += 1;
         }
-        // `column` is strictly better in the top's row, hence in every later row: the top is
-        // dead for its own row and all later ones (earlier rows are covered below it). Pop until
-        // `column` stops winning; it takes the last freed row with the entry already looked up.
-        let mut value = value;
-        let mut depth = depth - 1;
-        while let Some(top) = depth.checked_sub(1).map(|k| &values[k]) {
-            let above = lookup(row_of(level, depth - 1), column)?;
-            if !less(&above, top) {
-                break;
-            }
-            value = above;
-            depth -= 1;
-        }
-        values.truncate(depth);
-        values.push(value);
-        ws.columns.truncate(base + depth);
-        ws.columns.push(column);
-        ws.parents.truncate(base + depth);
-        ws.parents.push(index);
     }
-    Ok(())
+    ws.columns.truncate(base + depth);
+    ws.parents.truncate(base + depth);
+    poisoned
 }
 
 /// INTERPOLATE at `level`: on entry the odd rows hold their minima as positions in the child
 /// level's list (mapped to this level's list through `parents`, or the same list if `parents` is
 /// empty); on exit every row of the level holds its minimum as a position in this level's list.
+/// Returns whether a poisoned entry was met.
 #[expect(
     clippy::too_many_arguments,
     reason = "an internal helper with two call sites"
 )]
-fn interpolate<T, E, const VALUES: bool>(
+fn interpolate<T, P: Poison<T>, const VALUES: bool>(
     level: u32,
     rows: usize,
     len: usize,
     list: &impl List,
     buffer: &[usize],
     parents: &[usize],
-    lookup: &mut impl FnMut(usize, usize) -> Result<T, E>,
+    lookup: &mut impl FnMut(usize, usize) -> T,
     less: &mut impl FnMut(&T, &T) -> bool,
     argmin: &mut [usize],
     sink: &mut impl FnMut(usize, T),
-) -> Result<(), E> {
+) -> bool {
     let level_rows = rows >> level;
     let mut from = 0;
+    let mut poisoned = false;
     for k in (0..level_rows).step_by(2) {
         // The odd successor's minimum, in this list (the end for the last row). Never before
         // `from`, so that scans stay in bounds and move forward even if the matrix is not
@@ -443,8 +530,10 @@ fn interpolate<T, E, const VALUES: bool>(
             len - 1
         };
         let row = row_of(level, k);
-        argmin[row] = scan::<T, E, VALUES>(row, list, buffer, from, to, lookup, less, sink)?;
+        let (pos, bad) = scan::<T, P, VALUES>(row, list, buffer, from, to, lookup, less, sink);
+        poisoned |= bad;
+        argmin[row] = pos;
         from = to;
     }
-    Ok(())
+    poisoned
 }

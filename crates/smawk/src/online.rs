@@ -3,11 +3,18 @@
 
 use alloc::vec::Vec;
 use core::cmp::Ordering;
-use core::convert::Infallible;
 
 use crate::NanError;
-use crate::engine::{self, Workspace};
-use crate::search::{check_nan, infallible};
+use crate::engine::{self, Clean, Nan, Poison, Workspace};
+
+/// The result of a search with nothing poisoned.
+fn clean<T>(result: Result<OnlineMinima<T>, (usize, usize)>) -> OnlineMinima<T> {
+    // `Clean` poisons nothing, so this is always `Ok`; the fallback keeps the code panic-free.
+    result.unwrap_or_else(|_| OnlineMinima {
+        values: Vec::new(),
+        rows: Vec::new(),
+    })
+}
 
 /// The result of the online column minima functions: the minimum of each column and the row that
 /// attains it.
@@ -38,12 +45,14 @@ pub struct OnlineMinima<T> {
 /// Amortisation: a block of `k` rows costs `O(k)` lookups and is paid either by the `k` columns it
 /// makes tentative (if they all get finished without a reset) or by the `>= k - 1` increase of
 /// `base` in the reset that discards it.
-fn online<T, E>(
+///
+/// Stops at the first entry that `P` finds poisoned, returning its `(row, column)`.
+fn online<T, P: Poison<T>>(
     size: usize,
     initial: T,
-    entry: &mut impl FnMut(&[T], usize, usize) -> Result<T, E>,
+    entry: &mut impl FnMut(&[T], usize, usize) -> T,
     less: &mut impl FnMut(&T, &T) -> bool,
-) -> Result<OnlineMinima<T>, E> {
+) -> Result<OnlineMinima<T>, (usize, usize)> {
     let mut values = Vec::with_capacity(size);
     let mut rows = Vec::with_capacity(size);
     if size == 0 {
@@ -69,15 +78,26 @@ fn online<T, E>(
             slots.clear();
             slots.resize_with(block_columns, || None);
             let done = &values[..=finished];
-            engine::smawk_into::<_, _, true>(
+            let mut poisoned = None;
+            engine::smawk_into::<_, Clean, true>(
                 block_columns,
                 block_rows,
-                &mut |c, r| entry(done, base + r, finished + 1 + c),
+                &mut |c, r| {
+                    let (row, column) = (base + r, finished + 1 + c);
+                    let value = entry(done, row, column);
+                    if P::test(&value) && poisoned.is_none() {
+                        poisoned = Some((row, column));
+                    }
+                    value
+                },
                 less,
                 &mut argmin,
                 &mut |c, value| slots[c] = Some(value),
                 &mut ws,
-            )?;
+            );
+            if let Some(at) = poisoned {
+                return Err(at);
+            }
             for (c, (slot, &r)) in slots.iter_mut().zip(&argmin).enumerate() {
                 // The engine fills every slot; `take` avoids requiring `T: Clone`.
                 let Some(value) = slot.take() else { continue };
@@ -98,7 +118,10 @@ fn online<T, E>(
         }
         // Case 2: the new row i - 1 gives column i a new minimum. It then beats every older row
         // in every later column, so all tentative work is discarded and the base moves up.
-        let diagonal = entry(&values[..=finished], i - 1, i)?;
+        let diagonal = entry(&values[..=finished], i - 1, i);
+        if P::test(&diagonal) {
+            return Err((i - 1, i));
+        }
         if less(&diagonal, &values[i]) {
             values[i] = diagonal;
             rows[i] = i - 1;
@@ -110,7 +133,10 @@ fn online<T, E>(
         // Case 3: row i - 1 does not beat the tentative minimum of the last tentative column, so
         // (total monotonicity) it beats none before it either: column i is final.
         if tentative == i || {
-            let last = entry(&values[..=finished], i - 1, tentative)?;
+            let last = entry(&values[..=finished], i - 1, tentative);
+            if P::test(&last) {
+                return Err((i - 1, tentative));
+            }
             !less(&last, &values[tentative])
         } {
             finished = i;
@@ -203,12 +229,13 @@ where
     F: FnMut(&[T], usize, usize) -> T,
     C: FnMut(&T, &T) -> Ordering,
 {
-    infallible(online(
+    let result = online::<T, Clean>(
         size,
         initial,
-        &mut |done, i, j| Ok::<_, Infallible>(entry(done, i, j)),
+        &mut |done, i, j| entry(done, i, j),
         &mut |a, b| cmp(a, b) == Ordering::Less,
-    ))
+    );
+    clean(result)
 }
 
 /// Online column minima for [`Ord`] entries; see [`online_column_minima_by`].
@@ -243,12 +270,13 @@ where
     T: Ord,
     F: FnMut(&[T], usize, usize) -> T,
 {
-    infallible(online(
+    let result = online::<T, Clean>(
         size,
         initial,
-        &mut |done, i, j| Ok::<_, Infallible>(entry(done, i, j)),
+        &mut |done, i, j| entry(done, i, j),
         &mut |a, b| a < b,
-    ))
+    );
+    clean(result)
 }
 
 /// Online column minima for `f64` entries (IEEE order); a NaN entry is an error. See
@@ -294,10 +322,11 @@ pub fn online_column_minima_f64<F>(
 where
     F: FnMut(&[f64], usize, usize) -> f64,
 {
-    online(
+    online::<f64, Nan>(
         size,
         initial,
-        &mut |done, i, j| check_nan(entry(done, i, j), i, j),
+        &mut |done, i, j| entry(done, i, j),
         &mut |a, b| a < b,
     )
+    .map_err(|(row, column)| NanError::new(row, column))
 }

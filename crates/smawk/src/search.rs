@@ -5,25 +5,22 @@ use alloc::vec::Vec;
 use core::cmp::Ordering;
 use core::convert::Infallible;
 
-use crate::engine::{self, Workspace};
+use crate::engine::{self, Clean, Nan, Poison, Workspace};
 use crate::{Matrix, NanError};
 
 /// Row minima of a `rows` × `columns` lookup, leftmost on ties; empty if either size is zero.
-///
-/// With `EVALUATED`, every row's minimum entry is looked up, even where the other minima force
-/// it (the `f64` functions use this to guarantee that no returned minimum is NaN); without, a
-/// forced minimum costs no lookup.
-fn run<T, E, const EVALUATED: bool>(
+/// Also returns whether a poisoned entry was looked up.
+fn run<T, P: Poison<T>>(
     rows: usize,
     columns: usize,
-    lookup: &mut impl FnMut(usize, usize) -> Result<T, E>,
+    lookup: &mut impl FnMut(usize, usize) -> T,
     less: &mut impl FnMut(&T, &T) -> bool,
-) -> Result<Vec<usize>, E> {
+) -> (Vec<usize>, bool) {
     if rows == 0 || columns == 0 {
-        return Ok(Vec::new());
+        return (Vec::new(), false);
     }
     let mut argmin = vec![0; rows];
-    engine::smawk_into::<_, _, EVALUATED>(
+    let poisoned = engine::smawk_into::<_, P, false>(
         rows,
         columns,
         lookup,
@@ -31,8 +28,8 @@ fn run<T, E, const EVALUATED: bool>(
         &mut argmin,
         &mut |_, _| {},
         &mut Workspace::new(),
-    )?;
-    Ok(argmin)
+    );
+    (argmin, poisoned)
 }
 
 /// Unwraps a result that cannot be an error.
@@ -50,6 +47,54 @@ pub(crate) fn check_nan(value: f64, row: usize, column: usize) -> Result<f64, Na
         Err(NanError::new(row, column))
     } else {
         Ok(value)
+    }
+}
+
+/// Row minima of an `f64` lookup in the IEEE order, NaN being an error: `entry(i, j)` is the
+/// searched matrix, `position(i, j)` the caller's coordinates of that entry.
+///
+/// The search runs with a branch-free NaN flag. If the flag is set it runs again, recording the
+/// first NaN it looks up (the same one, the search being deterministic). Minima forced by their
+/// neighbours were never looked at, so the last pass checks every returned minimum.
+fn run_f64(
+    rows: usize,
+    columns: usize,
+    entry: impl Fn(usize, usize) -> f64,
+    position: impl Fn(usize, usize) -> (usize, usize),
+) -> Result<Vec<usize>, NanError> {
+    let nan = |(i, j)| {
+        let (row, column) = position(i, j);
+        NanError::new(row, column)
+    };
+    let (mut minima, poisoned) =
+        run::<f64, Nan>(rows, columns, &mut |i, j| entry(i, j), &mut |a, b| a < b);
+    if poisoned {
+        let mut first = None;
+        let (again, _) = run::<f64, Clean>(
+            rows,
+            columns,
+            &mut |i, j| {
+                let value = entry(i, j);
+                if value.is_nan() && first.is_none() {
+                    first = Some((i, j));
+                }
+                value
+            },
+            &mut |a, b| a < b,
+        );
+        if let Some(at) = first {
+            return Err(nan(at));
+        }
+        // Only an inconsistent matrix gets here; keep the run that met no NaN.
+        minima = again;
+    }
+    match minima
+        .iter()
+        .enumerate()
+        .find(|&(i, &j)| entry(i, j).is_nan())
+    {
+        Some((i, &j)) => Err(nan((i, j))),
+        None => Ok(minima),
     }
 }
 
@@ -149,12 +194,13 @@ where
     M: Matrix + ?Sized,
     C: FnMut(&M::Entry, &M::Entry) -> Ordering,
 {
-    infallible(run::<_, _, false>(
+    run::<_, Clean>(
         matrix.rows(),
         matrix.columns(),
-        &mut |i, j| Ok(matrix.entry(i, j)),
+        &mut |i, j| matrix.entry(i, j),
         &mut |a, b| cmp(a, b) == Ordering::Less,
-    ))
+    )
+    .0
 }
 
 /// The column of the leftmost minimum of each row of a totally monotone matrix of [`Ord`]
@@ -194,12 +240,13 @@ where
     M: Matrix + ?Sized,
     M::Entry: Ord,
 {
-    infallible(run::<_, _, false>(
+    run::<_, Clean>(
         matrix.rows(),
         matrix.columns(),
-        &mut |i, j| Ok(matrix.entry(i, j)),
+        &mut |i, j| matrix.entry(i, j),
         &mut |a, b| a < b,
-    ))
+    )
+    .0
 }
 
 /// The column of the leftmost minimum of each row of a totally monotone `f64` matrix; a NaN
@@ -220,9 +267,11 @@ where
 ///
 /// # Complexity
 ///
-/// At most `3 * columns + 12 * rows` entry lookups and `O(rows + columns)` time. Unlike the other
-/// variants, every row's minimum entry is looked up (and checked), even where the neighbouring
-/// rows' minima force it: up to `rows` more lookups.
+/// At most `3 * columns + 13 * rows` entry lookups and `O(rows + columns)` time: the search (at
+/// most `3 * columns + 12 * rows`), then one lookup per row to check the returned minimum, since
+/// a minimum forced by the neighbouring rows' is not looked at during the search. NaN checks
+/// are branch-free flags in the search; if the search meets a NaN, it runs a second time to
+/// locate the first one.
 ///
 /// # Examples
 ///
@@ -248,11 +297,11 @@ pub fn row_minima_f64<M>(matrix: &M) -> Result<Vec<usize>, NanError>
 where
     M: Matrix<Entry = f64> + ?Sized,
 {
-    run::<_, _, true>(
+    run_f64(
         matrix.rows(),
         matrix.columns(),
-        &mut |i, j| check_nan(matrix.entry(i, j), i, j),
-        &mut |a, b| a < b,
+        |i, j| matrix.entry(i, j),
+        |i, j| (i, j),
     )
 }
 
@@ -306,12 +355,13 @@ where
     M: Matrix + ?Sized,
     C: FnMut(&M::Entry, &M::Entry) -> Ordering,
 {
-    infallible(run::<_, _, false>(
+    run::<_, Clean>(
         matrix.columns(),
         matrix.rows(),
-        &mut |j, i| Ok(matrix.entry(i, j)),
+        &mut |j, i| matrix.entry(i, j),
         &mut |a, b| cmp(a, b) == Ordering::Less,
-    ))
+    )
+    .0
 }
 
 /// The row of the topmost minimum of each column, for a matrix of [`Ord`] entries whose
@@ -350,12 +400,13 @@ where
     M: Matrix + ?Sized,
     M::Entry: Ord,
 {
-    infallible(run::<_, _, false>(
+    run::<_, Clean>(
         matrix.columns(),
         matrix.rows(),
-        &mut |j, i| Ok(matrix.entry(i, j)),
+        &mut |j, i| matrix.entry(i, j),
         &mut |a, b| a < b,
-    ))
+    )
+    .0
 }
 
 /// The row of the topmost minimum of each column of an `f64` matrix whose transpose is totally
@@ -376,8 +427,8 @@ where
 ///
 /// # Complexity
 ///
-/// At most `3 * rows + 12 * columns` entry lookups and `O(rows + columns)` time; every column's
-/// minimum entry is looked up, as in [`row_minima_f64`].
+/// At most `3 * rows + 13 * columns` entry lookups and `O(rows + columns)` time: the search, then
+/// a check of every returned minimum, as in [`row_minima_f64`].
 ///
 /// # Examples
 ///
@@ -396,10 +447,10 @@ pub fn column_minima_f64<M>(matrix: &M) -> Result<Vec<usize>, NanError>
 where
     M: Matrix<Entry = f64> + ?Sized,
 {
-    run::<_, _, true>(
+    run_f64(
         matrix.columns(),
         matrix.rows(),
-        &mut |j, i| check_nan(matrix.entry(i, j), i, j),
-        &mut |a, b| a < b,
+        |j, i| matrix.entry(i, j),
+        |j, i| (i, j),
     )
 }

@@ -6,22 +6,32 @@ use alloc::vec::Vec;
 use core::cmp::Ordering;
 use core::convert::Infallible;
 
-use crate::engine;
 use crate::search::{check_nan, infallible};
 use crate::{CheckError, Matrix, NanError, NotTotallyMonotone};
 
-/// Row minima by looking at every entry; empty if either size is zero.
+/// Row minima by looking at every entry, in row-major order; empty if either size is zero.
 fn brute_force<T, E>(
     rows: usize,
     columns: usize,
     lookup: &mut impl FnMut(usize, usize) -> Result<T, E>,
     less: &mut impl FnMut(&T, &T) -> bool,
 ) -> Result<Vec<usize>, E> {
-    if rows == 0 || columns == 0 {
+    if columns == 0 {
         return Ok(Vec::new());
     }
-    let mut argmin = vec![0; rows];
-    engine::scan_into(rows, columns, lookup, less, &mut argmin, &mut |_, _| {})?;
+    let mut argmin = Vec::with_capacity(rows);
+    for row in 0..rows {
+        let mut best = lookup(row, 0)?;
+        let mut best_column = 0;
+        for column in 1..columns {
+            let value = lookup(row, column)?;
+            if less(&value, &best) {
+                best = value;
+                best_column = column;
+            }
+        }
+        argmin.push(best_column);
+    }
     Ok(argmin)
 }
 
