@@ -30,24 +30,24 @@ use alloc::vec::Vec;
 const BASE_ROWS: usize = 1;
 
 /// A level REDUCEs its inherited candidate list only if the list has more than `SLACK` times as
-/// many columns as the level has rows. 1 is plain SMAWK. Measured (see `docs/algorithms/smawk.md`):
-/// 2 saves 10% of the lookups and 25% of the time on matrices whose rows all have distinct minima,
-/// and changes nothing when REDUCE eliminates most columns; 4 trades a little on the first kind
-/// for a loss on the second.
+/// many columns as the level has rows; 1 is plain SMAWK. Measured (see `docs/algorithms/smawk.md`):
+/// against 1, 2 saves 10% of the lookups and 20% of the time when the rows' minima are all
+/// distinct, and 15% of the time (for 10% more lookups) when REDUCE eliminates most columns; 4 is
+/// a little faster again at large sizes but looks at more entries, which costly entries pay for.
 const SLACK: usize = 2;
 
 /// Matrices with at most this many entries are searched by a plain scan, without allocating any
 /// scratch space. Measured (see `docs/algorithms/smawk.md`): square matrices break even at about
-/// 9 × 9 with a square-root distance entry and 18 × 18 with a subtract-and-square entry; the
+/// 10 × 10 with a square-root distance entry and 22 × 22 with a subtract-and-square entry; the
 /// cutoff leans towards costlier entries.
 pub(crate) const SCAN_AREA: usize = 64;
 
 /// Scratch space for [`smawk_into`], reusable across calls.
 pub(crate) struct Workspace<T> {
-    /// The stored candidate lists, one after the other; then the REDUCE stack.
-    columns: Vec<usize>,
-    /// Parallel to `columns`: the candidate's position in the previous level's list.
-    parents: Vec<usize>,
+    /// The stored candidate lists, one after the other, then the REDUCE stack: each candidate's
+    /// column and its position in the previous level's list. (One allocation rather than two
+    /// halves the allocator traffic of one-shot calls.)
+    entries: Vec<(usize, usize)>,
     /// During REDUCE, `values[k]` is the entry of the stack's `k`-th column in the `k`-th row.
     values: Vec<T>,
 }
@@ -55,8 +55,7 @@ pub(crate) struct Workspace<T> {
 impl<T> Workspace<T> {
     pub(crate) const fn new() -> Self {
         Self {
-            columns: Vec::new(),
-            parents: Vec::new(),
+            entries: Vec::new(),
             values: Vec::new(),
         }
     }
@@ -86,7 +85,7 @@ const fn row_of(level: u32, k: usize) -> usize {
 
 /// A candidate list: position to column.
 trait List {
-    fn column(&self, buffer: &[usize], position: usize) -> usize;
+    fn column(&self, buffer: &[(usize, usize)], position: usize) -> usize;
 }
 
 /// All the columns, never stored.
@@ -94,7 +93,7 @@ struct AllColumns;
 
 impl List for AllColumns {
     #[inline(always)]
-    fn column(&self, _buffer: &[usize], position: usize) -> usize {
+    fn column(&self, _buffer: &[(usize, usize)], position: usize) -> usize {
         position
     }
 }
@@ -104,8 +103,8 @@ struct Stored(usize);
 
 impl List for Stored {
     #[inline(always)]
-    fn column(&self, buffer: &[usize], position: usize) -> usize {
-        buffer[self.0 + position]
+    fn column(&self, buffer: &[(usize, usize)], position: usize) -> usize {
+        buffer[self.0 + position].0
     }
 }
 
@@ -168,10 +167,8 @@ pub(crate) fn smawk_into<T, P: Poison<T>, const VALUES: bool>(
     let stored = (0..usize::BITS)
         .map(|l| (rows >> l).min(columns))
         .fold(0, usize::saturating_add);
-    ws.columns.clear();
-    ws.columns.reserve(stored);
-    ws.parents.clear();
-    ws.parents.reserve(stored);
+    ws.entries.clear();
+    ws.entries.reserve(stored);
     ws.values.clear();
     ws.values.reserve(rows);
 
@@ -181,7 +178,7 @@ pub(crate) fn smawk_into<T, P: Poison<T>, const VALUES: bool>(
         poisoned |= reduce::<T, P>(&AllColumns, columns, 0, rows, lookup, less, ws);
         Level {
             start: 0,
-            len: ws.columns.len(),
+            len: ws.entries.len(),
             stored: true,
             reduced: true,
         }
@@ -201,7 +198,7 @@ pub(crate) fn smawk_into<T, P: Poison<T>, const VALUES: bool>(
         level += 1;
         let level_rows = rows >> level;
         levels[level as usize] = if parent.len > level_rows * SLACK {
-            let start = ws.columns.len();
+            let start = ws.entries.len();
             poisoned |= if parent.stored {
                 reduce::<T, P>(
                     &Stored(parent.start),
@@ -217,7 +214,7 @@ pub(crate) fn smawk_into<T, P: Poison<T>, const VALUES: bool>(
             };
             Level {
                 start,
-                len: ws.columns.len() - start,
+                len: ws.entries.len() - start,
                 stored: true,
                 reduced: true,
             }
@@ -238,7 +235,7 @@ pub(crate) fn smawk_into<T, P: Poison<T>, const VALUES: bool>(
             scan::<T, P, VALUES>(
                 row,
                 &Stored(last.start),
-                &ws.columns,
+                &ws.entries,
                 from,
                 last.len - 1,
                 lookup,
@@ -249,7 +246,7 @@ pub(crate) fn smawk_into<T, P: Poison<T>, const VALUES: bool>(
             scan::<T, P, VALUES>(
                 row,
                 &AllColumns,
-                &ws.columns,
+                &ws.entries,
                 from,
                 last.len - 1,
                 lookup,
@@ -268,7 +265,7 @@ pub(crate) fn smawk_into<T, P: Poison<T>, const VALUES: bool>(
         level -= 1;
         let list = levels[level as usize];
         let parents = if child.reduced {
-            &ws.parents[child.start..child.start + child.len]
+            &ws.entries[child.start..child.start + child.len]
         } else {
             &[]
         };
@@ -278,7 +275,7 @@ pub(crate) fn smawk_into<T, P: Poison<T>, const VALUES: bool>(
                 rows,
                 list.len,
                 &Stored(list.start),
-                &ws.columns,
+                &ws.entries,
                 parents,
                 lookup,
                 less,
@@ -291,7 +288,7 @@ pub(crate) fn smawk_into<T, P: Poison<T>, const VALUES: bool>(
                 rows,
                 list.len,
                 &AllColumns,
-                &ws.columns,
+                &ws.entries,
                 parents,
                 lookup,
                 less,
@@ -304,9 +301,9 @@ pub(crate) fn smawk_into<T, P: Poison<T>, const VALUES: bool>(
     // Positions in the level-0 list to columns.
     let top = levels[0];
     if top.stored {
-        let list = &ws.columns[top.start..top.start + top.len];
+        let list = &ws.entries[top.start..top.start + top.len];
         for slot in &mut argmin[..rows] {
-            *slot = list.get(*slot).copied().unwrap_or(0);
+            *slot = list.get(*slot).map_or(0, |&(column, _)| column);
         }
     }
     poisoned
@@ -352,7 +349,7 @@ fn scan_into<T, P: Poison<T>>(
 fn scan<T, P: Poison<T>, const VALUES: bool>(
     row: usize,
     list: &impl List,
-    buffer: &[usize],
+    buffer: &[(usize, usize)],
     from: usize,
     to: usize,
     lookup: &mut impl FnMut(usize, usize) -> T,
@@ -424,12 +421,10 @@ fn reduce<T, P: Poison<T>>(
     less: &mut impl FnMut(&T, &T) -> bool,
     ws: &mut Workspace<T>,
 ) -> bool {
-    let base = ws.columns.len();
+    let base = ws.entries.len();
     let capacity = level_rows.min(input_len);
-    ws.columns.resize(base + capacity, 0);
-    ws.parents.resize(base + capacity, 0);
-    let (inputs, stack) = ws.columns.split_at_mut(base);
-    let parents = &mut ws.parents[base..];
+    ws.entries.resize(base + capacity, (0, 0));
+    let (inputs, stack) = ws.entries.split_at_mut(base);
     // `values[..depth]` are the stack's entries; anything after them is stale.
     let values = &mut ws.values;
     values.clear();
@@ -473,9 +468,8 @@ fn reduce<T, P: Poison<T>>(
             }
         };
         poisoned |= P::test(&value);
-        if let (Some(slot), Some(parent)) = (stack.get_mut(depth), parents.get_mut(depth)) {
-            *slot = column;
-            *parent = index;
+        if let Some(slot) = stack.get_mut(depth) {
+            *slot = (column, index);
             if let Some(old) = values.get_mut(depth) {
                 *old = value;
             } else {
@@ -484,8 +478,7 @@ fn reduce<T, P: Poison<T>>(
             depth += 1;
         }
     }
-    ws.columns.truncate(base + depth);
-    ws.parents.truncate(base + depth);
+    ws.entries.truncate(base + depth);
     poisoned
 }
 
@@ -502,8 +495,8 @@ fn interpolate<T, P: Poison<T>, const VALUES: bool>(
     rows: usize,
     len: usize,
     list: &impl List,
-    buffer: &[usize],
-    parents: &[usize],
+    buffer: &[(usize, usize)],
+    parents: &[(usize, usize)],
     lookup: &mut impl FnMut(usize, usize) -> T,
     less: &mut impl FnMut(&T, &T) -> bool,
     argmin: &mut [usize],
@@ -522,7 +515,7 @@ fn interpolate<T, P: Poison<T>, const VALUES: bool>(
             let here = if parents.is_empty() {
                 child
             } else {
-                parents.get(child).copied().unwrap_or(0)
+                parents.get(child).map_or(0, |&(_, parent)| parent)
             };
             argmin[odd] = here.max(from);
             argmin[odd]

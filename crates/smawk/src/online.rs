@@ -182,11 +182,13 @@ fn online<T, P: Poison<T>>(
 ///
 /// # Complexity
 ///
-/// `O(size)` entry lookups and time, amortized over the whole run (not per column): each column is
-/// finished with at most two lookups or by a SMAWK search on a square block of the previous rows
-/// whose cost is paid for by the columns it finishes or by the rows it lets the algorithm discard.
-/// The constant from that argument is large (below 40 lookups per column); measured on the
-/// families in `tests/complexity.rs`, the count is below 6 per column. Memory `O(size)`.
+/// `O(size)` entry lookups and time, amortized over the whole run (not per column): each column
+/// is finished with at most two lookups, or by a SMAWK search on a block of `k` earlier rows and
+/// at most `k` columns, which costs at most `15k` lookups and is paid for either by the `k`
+/// columns it finishes or by the increase, by at least `k - 1`, of the first row still in play
+/// when a reset discards it. That argument bounds the total by about `80 * size`; measured on the
+/// programs in `tests/complexity.rs`: 2.5 lookups per column when every minimum is on the
+/// diagonal, at most 11.6 otherwise. Memory `O(size)`.
 ///
 /// # Examples
 ///
