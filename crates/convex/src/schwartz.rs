@@ -517,19 +517,7 @@ mod tests {
                 check_search::<Robust>(&q[..2], &p);
             }
         }
-        let relations = [
-            Relation::Far,
-            Relation::NearlyTouching { ulps: 1 },
-            Relation::TouchingVertex,
-            Relation::TouchingEdge,
-            Relation::VertexOnEdge,
-            Relation::Overlapping,
-            Relation::Nested,
-            Relation::ParallelFacing,
-            Relation::HugeOffset,
-            Relation::Sliver,
-            Relation::CollinearInput,
-        ];
+        let relations = Relation::EVERY;
         for rel in relations {
             for round in 0..60 {
                 let (n, m) = (

@@ -17,20 +17,7 @@ use polydist_oracle::{
 };
 
 /// Every relation the generator builds.
-pub(crate) const RELATIONS: [Relation; 12] = [
-    Relation::Far,
-    Relation::NearlyTouching { ulps: 1 },
-    Relation::NearlyTouching { ulps: 5 },
-    Relation::TouchingVertex,
-    Relation::TouchingEdge,
-    Relation::VertexOnEdge,
-    Relation::Overlapping,
-    Relation::Nested,
-    Relation::ParallelFacing,
-    Relation::HugeOffset,
-    Relation::Sliver,
-    Relation::CollinearInput,
-];
+pub(crate) const RELATIONS: [Relation; 12] = Relation::EVERY;
 
 /// The worst numeric errors seen, in ulps.
 #[derive(Clone, Copy, Debug, Default)]

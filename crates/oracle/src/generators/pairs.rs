@@ -60,6 +60,25 @@ pub enum Relation {
     CollinearInput,
 }
 
+impl Relation {
+    /// One instance of every relation kind (nearly touching at 1 and 5 ulps), for tests that sweep
+    /// all relative positions.
+    pub const EVERY: [Relation; 12] = [
+        Relation::Far,
+        Relation::NearlyTouching { ulps: 1 },
+        Relation::NearlyTouching { ulps: 5 },
+        Relation::TouchingVertex,
+        Relation::TouchingEdge,
+        Relation::VertexOnEdge,
+        Relation::Overlapping,
+        Relation::Nested,
+        Relation::ParallelFacing,
+        Relation::HugeOffset,
+        Relation::Sliver,
+        Relation::CollinearInput,
+    ];
+}
+
 /// Two convex polygons produced by [`convex_pair`], with what the
 /// construction guarantees about them.
 #[derive(Clone, Debug, PartialEq)]
