@@ -13,7 +13,7 @@ use polydist_polygon::predicates::Kernel;
 use polydist_polygon::{ConvexPolygon, Feature};
 
 use crate::brute::brute_pair;
-use crate::meet::{Meet, classify, separation};
+use crate::meet::{Contact, classify, separation};
 use crate::pair::{Pair, canonical, certify, finish, nearer};
 use crate::result::{Closest, Separation};
 use crate::yang::{SCAN_BELOW, solve_yang};
@@ -69,11 +69,11 @@ impl Solved {
     pub(crate) fn from_meet<K: Kernel>(
         pp: &ConvexPolygon,
         qq: &ConvexPolygon,
-        meet: Meet,
+        meet: Contact,
         pair: impl FnOnce() -> Pair,
     ) -> Solved {
         match meet {
-            Meet::Disjoint => {
+            Contact::Disjoint => {
                 let pair = pair();
                 Solved::Disjoint(finish::<K>(pp, qq, pair), pair)
             }

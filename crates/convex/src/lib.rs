@@ -41,6 +41,7 @@ pub use polydist_polygon as polygon;
 
 mod brute;
 mod construct;
+mod contact;
 mod extreme;
 mod hint;
 mod meet;
@@ -52,7 +53,9 @@ mod within;
 mod yang;
 
 pub use brute::distance_brute;
+pub use contact::{contact, contact_with, intersects};
 pub use hint::{Hint, distance_with_hint};
+pub use meet::Contact;
 pub use pose::{Pose, distance_posed};
 pub use result::{Closest, SearchStats, Separation, reset_search_stats, search_stats};
 pub use schwartz::{distance_schwartz, distance_schwartz_with};

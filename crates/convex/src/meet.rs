@@ -21,26 +21,35 @@ use crate::extreme::extreme_left_of;
 use crate::pair::{at, caller_on_edge, caller_vertex};
 use crate::result::{Closest, Separation};
 
-/// How two convex polygons meet.
+/// Whether two convex polygons (points and segments included) meet, and how: the answer of
+/// [`contact`](crate::contact) and [`contact_with`](crate::contact_with).
+///
+/// The cases are those of [`Separation`] without the closest pair: with relative interiors
+/// (`relint(point) = the point`, `relint(segment) = the open segment`, `relint(polygon) = its open
+/// interior`), `Touching` means the closed sets meet but their relative interiors do not, and
+/// `Overlapping` means the relative interiors meet.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) enum Meet {
-    /// They do not meet.
+pub enum Contact {
+    /// The polygons do not meet.
     Disjoint,
-    /// They meet at `point` (an input vertex), relative interiors apart.
+    /// The polygons meet but their relative interiors do not.
     Touching {
+        /// A common point: an input vertex of one polygon, so exact.
         point: DVec2,
+        /// The caller's feature of `P` containing `point`.
         feature_p: Feature,
+        /// The caller's feature of `Q` containing `point`.
         feature_q: Feature,
     },
-    /// Their relative interiors meet.
+    /// The relative interiors meet.
     Overlapping,
 }
 
 /// The answer for a contact status; `closest` (called only when disjoint) gives the closest pair.
-pub(crate) fn separation(meet: Meet, closest: impl FnOnce() -> Closest) -> Separation {
+pub(crate) fn separation(meet: Contact, closest: impl FnOnce() -> Closest) -> Separation {
     match meet {
-        Meet::Disjoint => Separation::Disjoint(closest()),
-        Meet::Touching {
+        Contact::Disjoint => Separation::Disjoint(closest()),
+        Contact::Touching {
             point,
             feature_p,
             feature_q,
@@ -49,7 +58,7 @@ pub(crate) fn separation(meet: Meet, closest: impl FnOnce() -> Closest) -> Separ
             feature_p,
             feature_q,
         },
-        Meet::Overlapping => Separation::Overlapping,
+        Contact::Overlapping => Separation::Overlapping,
     }
 }
 
@@ -76,7 +85,7 @@ fn on_collinear_segment<K: Kernel>(x: DVec2, u: DVec2, v: DVec2) -> bool {
 
 /// The contact of a touching pair, found from the edge `e` of `A` whose line supports `B` at vertex `j`.
 /// Returns `(point, feature of A, feature of B)`.
-fn contact<K: Kernel>(
+pub(crate) fn contact_point<K: Kernel>(
     a_poly: &ConvexPolygon,
     e: usize,
     b_poly: &ConvexPolygon,
@@ -128,8 +137,10 @@ fn contact<K: Kernel>(
     (bj, feature_in_a(bj), caller_vertex(b_poly, j))
 }
 
-/// Exact contact classification (see the module docs).
-pub(crate) fn classify<K: Kernel>(pp: &ConvexPolygon, qq: &ConvexPolygon, fast: bool) -> Meet {
+/// Exact contact classification by separating axes (see the module docs): `O(n log m + m log n)`
+/// when `fast`, `O(nm)` otherwise; `O(1)` for two points or segments. The `O(log)` test is
+/// [`contact_with`](crate::contact_with); this one is its independent twin and the small-input path.
+pub(crate) fn classify<K: Kernel>(pp: &ConvexPolygon, qq: &ConvexPolygon, fast: bool) -> Contact {
     let (p, q) = (pp.vertices(), qq.vertices());
     let (n, m) = (p.len(), q.len());
     let two_d = n >= 3
@@ -145,7 +156,7 @@ pub(crate) fn classify<K: Kernel>(pp: &ConvexPolygon, qq: &ConvexPolygon, fast: 
             for e in 0..a.len() {
                 let (j, s) = max_left::<K>(b, a[e], at(a, e + 1), fast);
                 match s {
-                    Sign::Negative => return Meet::Disjoint,
+                    Sign::Negative => return Contact::Disjoint,
                     Sign::Zero => {
                         touch.get_or_insert((e, j, a_is_p));
                     }
@@ -154,18 +165,18 @@ pub(crate) fn classify<K: Kernel>(pp: &ConvexPolygon, qq: &ConvexPolygon, fast: 
             }
         }
         return match touch {
-            None => Meet::Overlapping,
+            None => Contact::Overlapping,
             Some((e, j, true)) => {
-                let (point, feature_p, feature_q) = contact::<K>(pp, e, qq, j);
-                Meet::Touching {
+                let (point, feature_p, feature_q) = contact_point::<K>(pp, e, qq, j);
+                Contact::Touching {
                     point,
                     feature_p,
                     feature_q,
                 }
             }
             Some((e, j, false)) => {
-                let (point, feature_q, feature_p) = contact::<K>(qq, e, pp, j);
-                Meet::Touching {
+                let (point, feature_q, feature_p) = contact_point::<K>(qq, e, pp, j);
+                Contact::Touching {
                     point,
                     feature_p,
                     feature_q,
@@ -175,9 +186,9 @@ pub(crate) fn classify<K: Kernel>(pp: &ConvexPolygon, qq: &ConvexPolygon, fast: 
     }
     if n == 1 && m == 1 {
         return if p[0] == q[0] {
-            Meet::Overlapping
+            Contact::Overlapping
         } else {
-            Meet::Disjoint
+            Contact::Disjoint
         };
     }
     // Z is a segment: a point and a segment, or two parallel segments. Its line is a segment's line.
@@ -186,7 +197,7 @@ pub(crate) fn classify<K: Kernel>(pp: &ConvexPolygon, qq: &ConvexPolygon, fast: 
         .chain(q)
         .any(|&x| K::orient(a, b, x).sign() != Sign::Zero)
     {
-        return Meet::Disjoint;
+        return Contact::Disjoint;
     }
     // Along d = b − a: sign((p_i − q_j)·d).
     let mut p_reaches = Sign::Negative; // max over (i, j) of sign((p_i − q_j)·d)
@@ -198,16 +209,16 @@ pub(crate) fn classify<K: Kernel>(pp: &ConvexPolygon, qq: &ConvexPolygon, fast: 
         }
     }
     if p_reaches == Sign::Negative || q_reaches == Sign::Negative {
-        return Meet::Disjoint;
+        return Contact::Disjoint;
     }
     if p_reaches == Sign::Positive && q_reaches == Sign::Positive {
-        return Meet::Overlapping;
+        return Contact::Overlapping;
     }
     // They share an endpoint: collinear with the same projection.
     for (i, &x) in p.iter().enumerate() {
         for (j, &y) in q.iter().enumerate() {
             if x == y {
-                return Meet::Touching {
+                return Contact::Touching {
                     point: x,
                     feature_p: caller_vertex(pp, i),
                     feature_q: caller_vertex(qq, j),
@@ -216,7 +227,7 @@ pub(crate) fn classify<K: Kernel>(pp: &ConvexPolygon, qq: &ConvexPolygon, fast: 
         }
     }
     // Unreachable with exact signs.
-    Meet::Touching {
+    Contact::Touching {
         point: p[0],
         feature_p: caller_vertex(pp, 0),
         feature_q: caller_vertex(qq, 0),

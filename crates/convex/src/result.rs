@@ -93,7 +93,10 @@ pub struct SearchStats {
     pub certificate_failures: u64,
     /// Failures repaired by the second search, seeded from the first answer (still `O(log)`).
     pub repaired_by_retry: u64,
-    /// Disjoint inputs on which both searches failed: the linear brute force answered.
+    /// Disjoint inputs on which both searches failed and Schwartz's `O(log² N)` search answered.
+    pub schwartz_fallbacks: u64,
+    /// Disjoint inputs on which Schwartz's answer failed the certificate too (possible only with an
+    /// inexact kernel): the brute force answered.
     pub brute_fallbacks: u64,
     /// Main-loop iterations of the last search.
     pub last_iterations: u32,
@@ -103,7 +106,7 @@ pub struct SearchStats {
 
 std::thread_local! {
     static STATS: Cell<SearchStats> = const { Cell::new(SearchStats {
-        calls: 0, certificate_failures: 0, repaired_by_retry: 0, brute_fallbacks: 0,
+        calls: 0, certificate_failures: 0, repaired_by_retry: 0, schwartz_fallbacks: 0, brute_fallbacks: 0,
         last_iterations: 0, last_bound: 0,
     }) };
 }

@@ -40,8 +40,9 @@ use polydist_polygon::ConvexPolygon;
 use polydist_polygon::predicates::{Kernel, Polynomial, Ring, Robust, Sign};
 
 use crate::brute::brute_pair;
+use crate::contact::contact_with;
 use crate::extreme::{extreme, extreme_left_of};
-use crate::meet::{classify, separation};
+use crate::meet::separation;
 use crate::pair::{Pair, at, canonical, certify, finish, nearer};
 use crate::result::Separation;
 
@@ -57,7 +58,7 @@ impl Polynomial<2> for ZHeight {
 
 /// `z_1 × z_2` for `z_1 = a_1 − b_1`, `z_2 = a_2 − b_2` (degree 2): `orient(z_1, z_2, 0)`, negative
 /// when the origin is strictly right of the side `z_1 → z_2`. Inputs `[a_1, b_1, a_2, b_2]` (x, y each).
-struct ZCross;
+pub(crate) struct ZCross;
 impl Polynomial<8> for ZCross {
     const DEGREE: u32 = 2;
     fn eval<R: Ring>(&self, x: &[R; 8]) -> R {
@@ -90,7 +91,7 @@ fn ceil_log2(x: usize) -> u32 {
 }
 
 /// `sign(x − y)` through the kernel.
-fn coord_sign<K: Kernel>(x: f64, y: f64) -> Sign {
+pub(crate) fn coord_sign<K: Kernel>(x: f64, y: f64) -> Sign {
     K::sign(&ZHeight, &[x, y])
 }
 
@@ -114,10 +115,10 @@ fn lex_extreme<K: Kernel>(v: &[DVec2], lowest: bool, negate: bool) -> usize {
 /// A side of the implicit `Z = A ⊖ B`: edge `e` of `A` at the corner `−b_c` (`from_a`), or edge `e` of
 /// `−B` (from `−b_e` to `−b_{e+1}`) at the corner `a_c`. Indices are unrolled along the chain.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-struct Side {
-    from_a: bool,
-    e: usize,
-    c: usize,
+pub(crate) struct Side {
+    pub(crate) from_a: bool,
+    pub(crate) e: usize,
+    pub(crate) c: usize,
 }
 
 impl Side {
@@ -142,17 +143,17 @@ impl Side {
 
 /// The ascending chain of `Z = A ⊖ B`: from the state `bottom` (lowest, rightmost on ties) to `top`
 /// (highest, rightmost on ties), unrolled so that `top ≥ bottom` in both indices.
-struct Chain<'a, K> {
-    a: &'a [DVec2],
-    b: &'a [DVec2],
-    bottom: (usize, usize),
-    top: (usize, usize),
+pub(crate) struct Chain<'a, K> {
+    pub(crate) a: &'a [DVec2],
+    pub(crate) b: &'a [DVec2],
+    pub(crate) bottom: (usize, usize),
+    pub(crate) top: (usize, usize),
     kernel: core::marker::PhantomData<K>,
 }
 
 impl<'a, K: Kernel> Chain<'a, K> {
     /// The chain of `A ⊖ B`: four `O(log)` extreme searches.
-    fn new(a: &'a [DVec2], b: &'a [DVec2]) -> Self {
+    pub(crate) fn new(a: &'a [DVec2], b: &'a [DVec2]) -> Self {
         let (ba, ta) = (
             lex_extreme::<K>(a, true, false),
             lex_extreme::<K>(a, false, false),
@@ -172,12 +173,12 @@ impl<'a, K: Kernel> Chain<'a, K> {
     }
 
     /// `sign(height of a_i − b_j)`.
-    fn height(&self, (i, j): (usize, usize)) -> Sign {
+    pub(crate) fn height(&self, (i, j): (usize, usize)) -> Sign {
         coord_sign::<K>(at(self.a, i).y, at(self.b, j).y)
     }
 
     /// The inputs `[a_1, b_1, a_2, b_2]` of a side's two vertices.
-    fn side_inputs(&self, s: Side) -> [f64; 8] {
+    pub(crate) fn side_inputs(&self, s: Side) -> [f64; 8] {
         let ((i1, j1), (i2, j2)) = (s.start(), s.end());
         let (a1, b1, a2, b2) = (
             at(self.a, i1),
@@ -352,7 +353,7 @@ impl<'a, K: Kernel> Chain<'a, K> {
 
 /// The nearest (canonical) of the candidate pairs of `P` and `Q`, a set that holds a closest pair;
 /// `None` when the point location says `0 ∈ Z` (or an inexact kernel left no candidate).
-fn closest_candidate<K: Kernel>(p: &[DVec2], q: &[DVec2]) -> Option<Pair> {
+pub(crate) fn closest_candidate<K: Kernel>(p: &[DVec2], q: &[DVec2]) -> Option<Pair> {
     let z = Chain::<K>::new(p, q);
     let w = Chain::<K>::new(q, p);
     let mut best: Option<Pair> = None;
@@ -399,13 +400,14 @@ fn closest_candidate<K: Kernel>(p: &[DVec2], q: &[DVec2]) -> Option<Pair> {
 /// same code as the other paths. Points and segments are allowed (two of them: the `O(1)` scan).
 ///
 /// With an inexact kernel the answer may be wrong, but every loop is bounded and nothing panics; a
-/// failed certificate falls back to the exact contact test and the brute force.
+/// failed certificate falls back to the exact contact test and, if that says disjoint (possible only
+/// with an inexact kernel), to the brute force.
 ///
 /// # Complexity
 /// `O(log² N)` exact predicates for disjoint polygons, `N = n + m` (`O(log N)` ranked steps of one
 /// `O(log N)` extreme search each; Schwartz's bucket table, which would make the expected cost
-/// `O(log N)` on random angles, is not built). Meeting polygons cost `O(n log m + m log n)` (the
-/// contact classification).
+/// `O(log N)` on random angles, is not built). Meeting polygons cost `O(log n + log m)` more (the
+/// contact test [`contact_with`](crate::contact_with)).
 ///
 /// # Examples
 /// ```
@@ -437,7 +439,7 @@ pub fn distance_schwartz_with<K: Kernel>(pp: &ConvexPolygon, qq: &ConvexPolygon)
     if let Some(pair) = closest_candidate::<K>(p, q).filter(|&b| certify::<K>(p, q, b)) {
         return Separation::Disjoint(finish::<K>(pp, qq, pair));
     }
-    separation(classify::<K>(pp, qq, true), || {
+    separation(contact_with::<K>(pp, qq), || {
         finish::<K>(pp, qq, brute_pair::<K>(pp, qq))
     })
 }

@@ -12,21 +12,25 @@
 //! - The paper's initial-range steps 3–5 are unproved; we search the chains facing the direction of a
 //!   seed pair (its steps 1–2), which always contain the support faces, certify the answer with
 //!   Theorem 1 in `O(1)` exact tests, reseed from the candidate's own direction when the certificate
-//!   fails, and fall back to the exact contact test and the brute force.
+//!   fails, then run the `O(log)` exact contact test ([`contact_with`](crate::contact_with)); a
+//!   disjoint pair on which both searches failed goes to Schwartz's `O(log² N)` search (no initial
+//!   ranges needed), and only an answer that fails the certificate there too (an inexact kernel) to the
+//!   brute force.
 //!
 //! Running time: `O(log n + log m)` exact predicates when a certificate holds (every disjoint input
-//! tested so far); meeting polygons cost `O(n log m + m log n)` (the contact test).
+//! tested so far) and for meeting polygons (the contact test); `O(log² (n + m))` in the worst case.
 
 use glam::DVec2;
 use polydist_polygon::ConvexPolygon;
 use polydist_polygon::predicates::{Kernel, Robust, Sign};
 
 use crate::brute::brute_pair;
+use crate::contact::contact_with;
 use crate::extreme::{Nearest, extreme, extreme_left_of, extreme_right_of, nearest_feature};
 use crate::hint::Solved;
-use crate::meet::classify;
 use crate::pair::{Pair, at, canonical, certify, finish, nearer, prev};
 use crate::result::{Separation, bump};
+use crate::schwartz::closest_candidate;
 
 /// Below this product `n·m` of vertex counts, [`distance_with`] scans all pairs instead of searching.
 ///
@@ -359,13 +363,16 @@ pub(crate) fn candidate<K: Kernel>(pp: &ConvexPolygon, qq: &ConvexPolygon) -> Op
 ///
 /// The search (Yang et al. 2006 rebuilt with exact predicates, see the crate docs) returns a candidate
 /// pair; Theorem 1 certifies it with `O(1)` exact tests. A failed certificate (always the case when the
-/// polygons meet) triggers one reseeded search from the candidate, then the exact contact test; if that
-/// says disjoint (the search failed), the brute force answers. [`search_stats`](crate::search_stats)
-/// counts each event.
+/// polygons meet) triggers up to two reseeded searches from the candidate, then the exact `O(log)`
+/// contact test [`contact_with`](crate::contact_with); if that says disjoint (the search failed),
+/// Schwartz's search answers ([`distance_schwartz_with`](crate::distance_schwartz_with), certified the
+/// same way), and the brute force only if that fails too (an inexact kernel).
+/// [`search_stats`](crate::search_stats) counts each event.
 ///
 /// # Complexity
 /// `O(log n + log m)` exact predicates when the certificate holds (every disjoint input we have
-/// tested: see the docs); `O(n log m + m log n)` to classify meeting polygons; `O(nm)` in the fallback.
+/// tested: see the docs) and for touching or overlapping polygons; `O(log² (n + m))` when Schwartz's
+/// search is needed; `O(nm)` only when an inexact kernel defeats both certified searches.
 ///
 /// # Examples
 /// ```
@@ -419,7 +426,12 @@ pub(crate) fn solve_yang<K: Kernel>(pp: &ConvexPolygon, qq: &ConvexPolygon) -> S
             pair = again;
         }
     }
-    Solved::from_meet::<K>(pp, qq, classify::<K>(pp, qq, true), || {
+    Solved::from_meet::<K>(pp, qq, contact_with::<K>(pp, qq), || {
+        // Disjoint, yet both searches failed: Schwartz's search needs no initial ranges.
+        if let Some(pair) = closest_candidate::<K>(p, q).filter(|&b| certify::<K>(p, q, b)) {
+            bump(|s| s.schwartz_fallbacks += 1);
+            return pair;
+        }
         bump(|s| s.brute_fallbacks += 1);
         brute_pair::<K>(pp, qq)
     })
