@@ -42,6 +42,7 @@ pub use polydist_polygon as polygon;
 mod brute;
 mod construct;
 mod contact;
+mod exact;
 mod extreme;
 mod hint;
 mod meet;
@@ -54,6 +55,7 @@ mod yang;
 
 pub use brute::distance_brute;
 pub use contact::{contact, contact_with, intersects};
+pub use exact::distance_exact;
 pub use hint::{Hint, distance_with_hint};
 pub use meet::Contact;
 pub use pose::{Pose, distance_posed};

@@ -151,3 +151,33 @@ fn exact_ties_and_hard_numbers() {
     report("ties and hard numbers", worst);
     assert_eq!(search_stats().brute_fallbacks, 0);
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig {
+        cases: 120,
+        failure_persistence: Some(Box::new(proptest::test_runner::FileFailurePersistence::Direct(
+            "proptest-regressions/agreement.txt",
+        ))),
+        ..ProptestConfig::default()
+    })]
+
+    /// Under Exact, `distance_exact` returns the oracle's exact rational squared distance (zero when
+    /// the polygons meet), in every relation, points and segments included.
+    #[test]
+    fn exact_rational_squared_distance(seed in any::<u64>(), rel in 0..RELATIONS.len(), n in 1usize..40, m in 1usize..40) {
+        use polydist_convex::distance_exact;
+        use polydist_convex::polygon::ConvexPolygon;
+        let mut rng = SplitMix64::new(seed);
+        let pair = convex_pair(&mut rng, 3 + n % 20, 3 + m % 20, RELATIONS[rel]);
+        // Points and segments: prefixes of the generated rings.
+        let p: Vec<DVec2> = pair.p.iter().copied().take(if n < 3 { n } else { pair.p.len() }).collect();
+        let q: Vec<DVec2> = pair.q.iter().copied().take(if m < 3 { m } else { pair.q.len() }).collect();
+        let (pp, qq) = (ConvexPolygon::try_new(&p).expect("valid"), ConvexPolygon::try_new(&q).expect("valid"));
+        let (answer, sq) = distance_exact(&pp, &qq);
+        let exact = polydist_oracle::convex_distance(&p, &q);
+        match answer.closest() {
+            Some(_) => prop_assert_eq!(&sq, &exact.sq),
+            None => prop_assert_eq!(sq, polydist_oracle::rat(0.0).expect("zero")),
+        }
+    }
+}

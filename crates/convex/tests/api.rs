@@ -70,6 +70,41 @@ fn thresholds(sq: &BigRational) -> Vec<f64> {
     v
 }
 
+/// The early exit fires on separated pairs when `r` is well below the distance, saves predicates,
+/// and never changes an answer (the thresholds test above runs the same code at the exact threshold).
+#[test]
+fn within_stops_early_when_a_seed_line_separates() {
+    use polydist_convex::{reset_search_stats, search_stats};
+    let mut rng = SplitMix64::new(77);
+    reset_search_stats();
+    let (mut early_cost, mut full_cost, mut cases) = (0u64, 0u64, 0u64);
+    for round in 0..200 {
+        let (n, m) = (16 + rng.index(200), 16 + rng.index(60));
+        let (p, q) = disjoint_pair(&mut rng, n, m);
+        let (pp, qq) = (poly(&p), poly(&q));
+        let exact = convex_distance(&p, &q);
+        let d = sqrt_nearest(&exact.sq);
+        let r = d * [0.1, 0.5, 0.9][round % 3];
+        check_within::<Robust>(&pp, &qq, &exact.sq, r);
+        reset_predicate_counts();
+        let before = search_stats().within_early_exits;
+        let got = distance_within::<Counted<Robust>>(&pp, &qq, r);
+        assert!(matches!(got, Within::Beyond { .. }));
+        if search_stats().within_early_exits > before {
+            early_cost += predicate_counts().total();
+            reset_predicate_counts();
+            let _ = distance_with::<Counted<Robust>>(&pp, &qq);
+            full_cost += predicate_counts().total();
+            cases += 1;
+        }
+    }
+    println!(
+        "early exits: {cases} of 200; predicates {early_cost} against {full_cost} for the full query"
+    );
+    assert!(cases >= 100, "only {cases} early exits");
+    assert!(early_cost < full_cost, "{early_cost} >= {full_cost}");
+}
+
 #[test]
 fn within_is_exact_at_the_threshold_every_relation() {
     let mut rng = SplitMix64::new(21);
