@@ -18,7 +18,7 @@
 //! distances below `2^-500`).
 
 use glam::DVec2;
-use polydist_predicates::{Polynomial, Ring, estimate_value, round_value};
+use polydist_predicates::{DoubleDouble, Polynomial, Ring, round_value};
 
 /// `|p − q|²` (degree 2). Inputs `[px, py, qx, qy]`.
 struct SqDist;
@@ -97,10 +97,25 @@ pub(crate) fn vertex_vertex(p: DVec2, q: DVec2) -> Built {
 }
 
 /// Distance from vertex `x` to edge `ab` whose foot is strictly inside the edge, and the foot.
+///
+/// The shared subexpressions (`b − a`, `x − a`, `L`, the cross and dot products) are evaluated once in
+/// double-double with a rigorous bound; each output is the bound-certified correct rounding of its
+/// exact value, and only an output the bound cannot certify is evaluated exactly ([`round_value`]).
+/// The results are therefore the same as evaluating each polynomial exactly and rounding once.
 pub(crate) fn vertex_edge(x: DVec2, a: DVec2, b: DVec2) -> Built {
     let input = [a.x, a.y, b.x, b.y, x.x, x.y];
-    let l = round_value(&Len2, &[a.x, a.y, b.x, b.y]);
-    let c2 = round_value(&CrossSquared, &input);
+    let dd = DoubleDouble::input;
+    let (ex, ey) = (dd(b.x).sub(&dd(a.x)), dd(b.y).sub(&dd(a.y)));
+    let (wx, wy) = (dd(x.x).sub(&dd(a.x)), dd(x.y).sub(&dd(a.y)));
+    let len2 = ex.square().add(&ey.square());
+    let cross = ex.mul(&wy).sub(&ey.mul(&wx));
+    let l = len2
+        .certain_rounding()
+        .unwrap_or_else(|| round_value(&Len2, &[a.x, a.y, b.x, b.y]));
+    let c2 = cross
+        .square()
+        .certain_rounding()
+        .unwrap_or_else(|| round_value(&CrossSquared, &input));
     let (distance, squared) = if c2.is_finite() && c2 >= f64::MIN_POSITIVE {
         let s = c2 / l;
         (s.sqrt(), s)
@@ -108,46 +123,52 @@ pub(crate) fn vertex_edge(x: DVec2, a: DVec2, b: DVec2) -> Built {
         let c = round_value(&Cross, &input).abs();
         (c / l.sqrt(), (c / l) * c)
     };
+    // The foot f = a + t(b − a), t = ((x − a)·(b − a))/L: per coordinate f_k = N_k / L with
+    // N_k = a_k·L + ((x − a)·(b − a))·e_k.
+    let along = wx.mul(&ex).add(&wy.mul(&ey));
+    let coord = |k: usize| {
+        let (ak, ek) = if k == 0 { (a.x, ex) } else { (a.y, ey) };
+        let n = dd(ak).mul(&len2).add(&along.mul(&ek));
+        let residual = |g: f64| {
+            let xs = [a.x, a.y, b.x, b.y, x.x, x.y, g];
+            if k == 0 {
+                round_value(&FootResidual::<0>, &xs)
+            } else {
+                round_value(&FootResidual::<1>, &xs)
+            }
+        };
+        foot_coordinate(n, len2, l, residual)
+    };
     Built {
         distance,
         squared,
         vertex: x,
-        other: foot(x, a, b, l),
+        other: DVec2::new(coord(0), coord(1)),
     }
 }
 
-/// The foot of `x` on the line `ab` (`l = fl(|b − a|²)`), each coordinate within 1 ulp.
-fn foot(x: DVec2, a: DVec2, b: DVec2, l: f64) -> DVec2 {
-    // First quotient: g = fl(N)/fl(L) with N evaluated exactly (the residual with g = 0 is N).
-    let coord = |k: usize| {
-        let mut input = [a.x, a.y, b.x, b.y, x.x, x.y, 0.0];
-        let n = if k == 0 {
-            round_value(&FootResidual::<0>, &input)
-        } else {
-            round_value(&FootResidual::<1>, &input)
-        };
-        let g = n / l;
-        if !g.is_finite() {
-            return g;
-        }
-        input[6] = g;
-        // The residual only needs a few correct bits: take the double-double estimate when its bound is
-        // below 2^-10 ulp(g) after division by L, else evaluate it exactly.
-        let est = if k == 0 {
-            estimate_value(&FootResidual::<0>, &input)
-        } else {
-            estimate_value(&FootResidual::<1>, &input)
-        };
-        let ulp_g = (g.next_up() - g).abs();
-        let r = if est.error / l <= ulp_g / 1024.0 {
-            est.value
-        } else if k == 0 {
-            round_value(&FootResidual::<0>, &input)
-        } else {
-            round_value(&FootResidual::<1>, &input)
-        };
-        let corr = r / l;
-        if corr.is_finite() { g + corr } else { g }
+/// One coordinate of the foot, `N/L`, within 1 ulp: a first quotient `g = fl(N)/fl(L)`, then the
+/// residual `R = N − g·L` (only a few bits are needed: the double-double estimate when its bound is
+/// below `2⁻¹⁰·ulp(g)` after division by `L`, else `exact_residual(g)`, exact and rounded once) corrects
+/// it: `g + fl(R)/fl(L)`. `n` and `len2` are the double-double `N` and `L`, `l = fl(L)`.
+fn foot_coordinate(
+    n: DoubleDouble,
+    len2: DoubleDouble,
+    l: f64,
+    exact_residual: impl Fn(f64) -> f64,
+) -> f64 {
+    let nf = n.certain_rounding().unwrap_or_else(|| exact_residual(0.0));
+    let g = nf / l;
+    if !g.is_finite() {
+        return g;
+    }
+    let (value, error) = n.sub(&DoubleDouble::input(g).mul(&len2)).estimate();
+    let ulp_g = (g.next_up() - g).abs();
+    let r = if error / l <= ulp_g / 1024.0 {
+        value
+    } else {
+        exact_residual(g)
     };
-    DVec2::new(coord(0), coord(1))
+    let corr = r / l;
+    if corr.is_finite() { g + corr } else { g }
 }

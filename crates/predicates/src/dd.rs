@@ -17,9 +17,30 @@ const ETA: f64 = f64::from_bits(1 << 14);
 /// Relative slack for the rounding of the bound's own arithmetic (at most ~20 roundings): 1 + 2⁻⁴⁸.
 const GROW: f64 = 1.0 + 1.0 / 281_474_976_710_656.0;
 
-/// A double-double value with an error bound (see the module docs).
+/// A double-double value with a rigorous running error bound: `hi + lo` (about 106 bits) and
+/// `err ≥ |exact − (hi + lo)|`, where *exact* is the value of the same expression in exact arithmetic.
+///
+/// It is a [`Ring`]: evaluate any [`Polynomial`](crate::Polynomial) on it, or write a construction
+/// that shares subexpressions (one `|b − a|²` for several outputs) directly with its operations. Inputs
+/// enter exactly ([`Ring::input`]); [`certain_rounding`](Self::certain_rounding) then returns the
+/// correctly rounded exact value when the bound proves it, and [`estimate`](Self::estimate) a value
+/// with a bound. When neither is good enough, evaluate exactly with [`round_value`](crate::round_value).
+/// Overflow makes the bound infinite; underflow is covered by an absolute slack of `2⁻¹⁰⁶⁰` per operation.
+///
+/// # Examples
+/// ```
+/// use polydist_predicates::{DoubleDouble, Ring};
+///
+/// // (0.1 + 0.2) − 0.3, in exact arithmetic on the three doubles, is exactly 2⁻⁵⁵: not 0.
+/// let x = DoubleDouble::input(0.1).add(&DoubleDouble::input(0.2)).sub(&DoubleDouble::input(0.3));
+/// let (value, error) = x.estimate();
+/// assert!((value - 2f64.powi(-55)).abs() <= error);
+/// // A product is certified at once: the double nearest to the exact 0.1·0.1.
+/// let y = DoubleDouble::input(0.1).mul(&DoubleDouble::input(0.1));
+/// assert_eq!(y.certain_rounding(), Some(0.1 * 0.1));
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) struct DoubleDouble {
+pub struct DoubleDouble {
     hi: f64,
     lo: f64,
     err: f64,
@@ -27,7 +48,8 @@ pub(crate) struct DoubleDouble {
 
 impl DoubleDouble {
     /// `hi` and a bound on `|exact − hi|` (`+∞` when anything overflowed).
-    pub(crate) fn estimate(self) -> (f64, f64) {
+    #[must_use]
+    pub fn estimate(self) -> (f64, f64) {
         let bound = (self.err + self.lo.abs()) * GROW;
         if self.hi.is_finite() && bound.is_finite() {
             (self.hi, bound)
@@ -36,8 +58,10 @@ impl DoubleDouble {
         }
     }
 
-    /// The correctly rounded value when the bound certifies it.
-    pub(crate) fn certain_rounding(self) -> Option<f64> {
+    /// The correctly rounded exact value, when the bound certifies it (`None` otherwise, and for zero,
+    /// overflow and results below `2⁻⁹⁷⁰`).
+    #[must_use]
+    pub fn certain_rounding(self) -> Option<f64> {
         let DoubleDouble { hi, lo, err } = self;
         // hi = ±MAX has an infinite neighbour: leave overflow-adjacent roundings to the exact stage.
         if !(lo.is_finite() && err.is_finite()) || hi == 0.0 || hi.abs() >= f64::MAX || hi.is_nan()

@@ -379,6 +379,7 @@ impl Kernel for Robust {
         let (ax, ay, bx, by) = (p.x - a.x, p.y - a.y, p.x - b.x, p.y - b.y);
         match filter_squares(ax * ax + ay * ay, bx * bx + by * by) {
             Some(s) => s.to_ordering(),
+            None if a == b => Ordering::Equal,
             None => sign_exact(&Nearer, &[p.x, p.y, a.x, a.y, b.x, b.y]).to_ordering(),
         }
     }
@@ -388,6 +389,8 @@ impl Kernel for Robust {
         let (ex, ey, fx, fy) = (a.x - b.x, a.y - b.y, c.x - d.x, c.y - d.y);
         match filter_squares(ex * ex + ey * ey, fx * fx + fy * fy) {
             Some(s) => s.to_ordering(),
+            // The same pair either way round (a candidate against itself): equal, with no exact stage.
+            None if (a == c && b == d) || (a == d && b == c) => Ordering::Equal,
             None => sign_exact(&Dist4, &[a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y]).to_ordering(),
         }
     }

@@ -45,6 +45,7 @@ mod ring;
 mod sign;
 
 pub use counting::{Counted, PredicateCounts, predicate_counts, reset_predicate_counts};
+pub use dd::DoubleDouble;
 pub use expansion::Expansion;
 pub use kernel::{
     Cross, Dist2, Dist4, Dot, Exact, Fast, Kernel, Nearer, Orient, PerpVsPerp, PointsVsPerp, Robust,
