@@ -8,10 +8,11 @@
 //! - vertex–edge (foot strictly inside edge `ab`): `c² = ((b − a) × (x − a))²` and `L = |b − a|²`,
 //!   each exact then rounded once; `s = fl(fl(c²)/fl(L))` (3 roundings: < 3 ulps);
 //!   `d = fl(√s)` (1.5u + one rounding: < 2.5 ulps).
-//! - the foot `f = a + t(b − a)`, per coordinate `f.x = N_x / L` with `N_x = a.x·L + ((x − a)·(b − a))(b.x − a.x)`
-//!   (degree 3): a first quotient `g = fl(N_x)/fl(L)`, then the exact residual `R = N_x − g·L` (degree 3
-//!   again, with `g` as an input) corrects it: `f.x ≈ g + fl(R)/fl(L)`. The correction is `O(u)·|g|`
-//!   with relative error `O(u)`, so the result is within `0.5 + O(2⁻⁵⁰)` ulp: under 1 ulp per coordinate.
+//! - the foot `f = a + t(b − a)`, per coordinate `f_k = N_k / L` with `N_k = a_k·L + ((x − a)·(b − a))(b_k − a_k)`
+//!   (degree 3): from a plain estimate `g`, the residual `R = N_k − g·L` is evaluated in double-double
+//!   with a rigorous bound and the step `g + fl(R)/fl(L)` is accepted once the bound shows it within
+//!   0.625 of a gap of the result (at most three steps; else `g = fl(N_k)/fl(L)` and one exactly
+//!   evaluated residual, within `0.5 + O(2⁻⁵⁰)` ulp). Under 1 ulp per coordinate either way.
 //!
 //! If `c²` overflows (coordinates near `2^500`), the fallback `s = (c/L)·c`, `d = |c|/√L` costs at
 //! most 5u and 3.5u instead; subnormal intermediates void the bounds (not met in practice: they need
@@ -98,15 +99,16 @@ pub(crate) fn vertex_vertex(p: DVec2, q: DVec2) -> Built {
 
 /// Distance from vertex `x` to edge `ab` whose foot is strictly inside the edge, and the foot.
 ///
-/// The shared subexpressions (`b − a`, `x − a`, `L`, the cross and dot products) are evaluated once in
-/// double-double with a rigorous bound; each output is the bound-certified correct rounding of its
-/// exact value, and only an output the bound cannot certify is evaluated exactly ([`round_value`]).
-/// The results are therefore the same as evaluating each polynomial exactly and rounding once.
+/// The shared subexpressions (the exact differences `b − a`, `x − a`, then `L` and the cross product)
+/// are evaluated once in double-double with a rigorous bound; `L` and `c²` are the bound-certified
+/// correct roundings of their exact values (exact evaluation, [`round_value`], only where the bound
+/// cannot certify), so the distance budgets above hold unchanged. The foot is refined from a plain
+/// estimate by exactly bounded residuals (see [`foot_coordinate`]).
 pub(crate) fn vertex_edge(x: DVec2, a: DVec2, b: DVec2) -> Built {
     let input = [a.x, a.y, b.x, b.y, x.x, x.y];
-    let dd = DoubleDouble::input;
-    let (ex, ey) = (dd(b.x).sub(&dd(a.x)), dd(b.y).sub(&dd(a.y)));
-    let (wx, wy) = (dd(x.x).sub(&dd(a.x)), dd(x.y).sub(&dd(a.y)));
+    let diff = DoubleDouble::difference;
+    let (ex, ey) = (diff(b.x, a.x), diff(b.y, a.y));
+    let (wx, wy) = (diff(x.x, a.x), diff(x.y, a.y));
     let len2 = ex.square().add(&ey.square());
     let cross = ex.mul(&wy).sub(&ey.mul(&wx));
     let l = len2
@@ -123,13 +125,24 @@ pub(crate) fn vertex_edge(x: DVec2, a: DVec2, b: DVec2) -> Built {
         let c = round_value(&Cross, &input).abs();
         (c / l.sqrt(), (c / l) * c)
     };
-    // The foot f = a + t(b − a), t = ((x − a)·(b − a))/L: per coordinate f_k = N_k / L with
-    // N_k = a_k·L + ((x − a)·(b − a))·e_k.
-    let along = wx.mul(&ex).add(&wy.mul(&ey));
+    // The foot f = x − (c/L)·(−e_y, e_x): f_x·L = x_x·L + c·e_y and f_y·L = x_y·L − c·e_x (the same
+    // exact values as a_k·L + ((x − a)·e)·e_k, which `FootResidual` evaluates).
+    let ratio = cross.estimate().0 / l;
     let coord = |k: usize| {
-        let (ak, ek) = if k == 0 { (a.x, ex) } else { (a.y, ey) };
-        let n = dd(ak).mul(&len2).add(&along.mul(&ek));
+        let (xk, start) = if k == 0 {
+            (x.x, x.x + ratio * ey.estimate().0)
+        } else {
+            (x.y, x.y - ratio * ex.estimate().0)
+        };
         let residual = |g: f64| {
+            let moved = diff(xk, g).mul(&len2);
+            if k == 0 {
+                moved.add(&cross.mul(&ey))
+            } else {
+                moved.sub(&cross.mul(&ex))
+            }
+        };
+        let exact_residual = |g: f64| {
             let xs = [a.x, a.y, b.x, b.y, x.x, x.y, g];
             if k == 0 {
                 round_value(&FootResidual::<0>, &xs)
@@ -137,7 +150,7 @@ pub(crate) fn vertex_edge(x: DVec2, a: DVec2, b: DVec2) -> Built {
                 round_value(&FootResidual::<1>, &xs)
             }
         };
-        foot_coordinate(n, len2, l, residual)
+        foot_coordinate(start, residual, l, exact_residual)
     };
     Built {
         distance,
@@ -147,28 +160,41 @@ pub(crate) fn vertex_edge(x: DVec2, a: DVec2, b: DVec2) -> Built {
     }
 }
 
-/// One coordinate of the foot, `N/L`, within 1 ulp: a first quotient `g = fl(N)/fl(L)`, then the
-/// residual `R = N − g·L` (only a few bits are needed: the double-double estimate when its bound is
-/// below `2⁻¹⁰·ulp(g)` after division by `L`, else `exact_residual(g)`, exact and rounded once) corrects
-/// it: `g + fl(R)/fl(L)`. `n` and `len2` are the double-double `N` and `L`, `l = fl(L)`.
+/// One coordinate `N/L` of the foot, within 1 ulp, refined from the estimate `g`.
+///
+/// `residual(g)` is `R = N − g·L` in double-double with a rigorous bound `e`; `l = fl(L)`. The step
+/// `g ← fl(g + fl(r/l))` has error at most `½·gap + 2.5u·|corr| + 1.25·e/l` (the roundings of `L`, of
+/// the quotient and of `r`'s bound, to first order with margin); it is accepted when the last two
+/// terms are below an eighth of the smaller gap around the result, so the result is within `0.625`
+/// of a gap (under 1 ulp). At most three steps, then the former exact method: `g = fl(N)/fl(L)` and one
+/// exactly evaluated residual (`exact_residual(g)`, rounded once), within `0.5 + O(2⁻⁵⁰)` ulp.
 fn foot_coordinate(
-    n: DoubleDouble,
-    len2: DoubleDouble,
+    mut g: f64,
+    residual: impl Fn(f64) -> DoubleDouble,
     l: f64,
     exact_residual: impl Fn(f64) -> f64,
 ) -> f64 {
-    let nf = n.certain_rounding().unwrap_or_else(|| exact_residual(0.0));
-    let g = nf / l;
+    const U: f64 = f64::EPSILON / 2.0;
+    for _ in 0..3 {
+        if !g.is_finite() {
+            break;
+        }
+        let (r, e) = residual(g).estimate();
+        let corr = r / l;
+        let next = g + corr;
+        if !next.is_finite() {
+            break;
+        }
+        let gap = (next.next_up() - next).min(next - next.next_down());
+        if 2.5 * U * corr.abs() + 1.25 * e / l <= gap / 8.0 {
+            return next;
+        }
+        g = next;
+    }
+    let g = exact_residual(0.0) / l;
     if !g.is_finite() {
         return g;
     }
-    let (value, error) = n.sub(&DoubleDouble::input(g).mul(&len2)).estimate();
-    let ulp_g = (g.next_up() - g).abs();
-    let r = if error / l <= ulp_g / 1024.0 {
-        value
-    } else {
-        exact_residual(g)
-    };
-    let corr = r / l;
+    let corr = exact_residual(g) / l;
     if corr.is_finite() { g + corr } else { g }
 }

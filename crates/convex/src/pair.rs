@@ -32,16 +32,29 @@ impl Pair {
     }
 }
 
+/// `i mod n` without a division for the indices the searches produce (below `2n`).
+#[inline(always)]
+fn wrap(i: usize, n: usize) -> usize {
+    if i < n {
+        i
+    } else if i - n < n {
+        i - n
+    } else {
+        i % n
+    }
+}
+
 /// Vertex `i` of the ring `v` (indices taken mod `len`).
 #[inline]
 pub(crate) fn at(v: &[DVec2], i: usize) -> DVec2 {
-    v[i % v.len()]
+    v[wrap(i, v.len())]
 }
 
 /// Vertex `i − 1` of the ring `v`.
 #[inline]
 pub(crate) fn prev(v: &[DVec2], i: usize) -> DVec2 {
-    v[(i % v.len() + v.len() - 1) % v.len()]
+    let n = v.len();
+    v[wrap(wrap(i, n) + n - 1, n)]
 }
 
 /// The squared distance of a pair, for exact comparison.

@@ -47,6 +47,15 @@ pub struct DoubleDouble {
 }
 
 impl DoubleDouble {
+    /// `a − b` exactly (Two-Sum: the difference of two doubles is a double-double), with a zero error
+    /// bound. Overflow makes the value non-finite, which every check rejects.
+    #[inline(always)]
+    #[must_use]
+    pub fn difference(a: f64, b: f64) -> Self {
+        let (hi, lo) = two_sum(a, -b);
+        DoubleDouble { hi, lo, err: 0.0 }
+    }
+
     /// `hi` and a bound on `|exact − hi|` (`+∞` when anything overflowed).
     #[must_use]
     pub fn estimate(self) -> (f64, f64) {
