@@ -9,7 +9,14 @@
 //!   search on outer Voronoi regions, rebuilt for exact predicates (Table 1 in its weak reading, a
 //!   one-sided step once a range is a single feature, a loop bound that holds whatever the predicates
 //!   say) and certified by Theorem 1 (Lin–Canny) in `O(1)` exact tests.
+//! - [`distance_schwartz_with`]: Schwartz (1981)'s `O(log² N)` search on the implicit Minkowski
+//!   difference, a second algorithm with the same result type (and the Yang path's last resort).
+//! - [`contact_with`] / [`intersects`]: the intersection test in `O(log n + log m)` (disjoint, touching
+//!   with an exact contact point, overlapping), by prune-and-search on the Minkowski chains.
 //! - [`distance_to_point`]: a point against a polygon in `O(log n)`.
+//! - [`distance_within`] (exact threshold decisions, with an early exit), [`distance_with_hint`]
+//!   (temporal coherence), [`distance_posed`] (rigid poses), [`distance_exact`] (the squared distance as
+//!   an exact rational).
 //! - [`distance_brute`]: the `O(nm)` brute-force twin, for testing and as a baseline.
 //!
 //! # Numbers
