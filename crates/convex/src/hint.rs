@@ -13,9 +13,10 @@ use polydist_polygon::predicates::Kernel;
 use polydist_polygon::{ConvexPolygon, Feature};
 
 use crate::brute::brute_pair;
+use crate::linear::{LINEAR_BELOW, certified_walk};
 use crate::meet::{Contact, classify, separation};
 use crate::pair::{Pair, canonical, certify, finish, nearer};
-use crate::result::{Closest, Separation};
+use crate::result::{Closest, Separation, bump};
 use crate::yang::{SCAN_BELOW, solve_yang};
 
 /// At most this many steps of the local walk before [`distance_with_hint`] falls back to the search.
@@ -92,13 +93,24 @@ impl Solved {
     }
 }
 
-/// [`distance_with`](crate::distance_with)'s own code (the scan below [`SCAN_BELOW`], else
-/// `solve_yang`, shared with `distance_yang_with`: candidate, certificate, reseeds, contact test, brute force, with the same
-/// statistics), also returning the pair. The tests check that both agree.
+/// [`distance_with`](crate::distance_with)'s code, also returning the pair: the scan below
+/// [`SCAN_BELOW`]; for two polygons with `n + m <` `LINEAR_BELOW`, the linear walk's certified pair
+/// when it is not `parallel`; else `solve_yang`, shared with `distance_yang_with` (candidate,
+/// certificate, reseeds, contact test, Schwartz, brute force, with the same statistics).
 pub(crate) fn solve<K: Kernel>(pp: &ConvexPolygon, qq: &ConvexPolygon) -> Solved {
-    if pp.len() * qq.len() < SCAN_BELOW {
+    let (n, m) = (pp.len(), qq.len());
+    if n * m < SCAN_BELOW {
         let meet = classify::<K>(pp, qq, false);
         return Solved::from_meet::<K>(pp, qq, meet, || brute_pair::<K>(pp, qq));
+    }
+    if n >= 3 && m >= 3 && n + m < LINEAR_BELOW {
+        if let Some(pair) = certified_walk::<K>(pp.vertices(), qq.vertices()) {
+            let closest = finish::<K>(pp, qq, pair);
+            if !closest.parallel {
+                bump(|s| s.linear_walks += 1);
+                return Solved::Disjoint(closest, pair);
+            }
+        }
     }
     solve_yang::<K>(pp, qq)
 }

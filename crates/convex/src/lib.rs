@@ -52,6 +52,7 @@ mod contact;
 mod exact;
 mod extreme;
 mod hint;
+mod linear;
 mod meet;
 mod pair;
 mod pose;

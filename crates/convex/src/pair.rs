@@ -189,8 +189,18 @@ pub(crate) fn caller_vertex(poly: &ConvexPolygon, i: usize) -> Feature {
 /// The caller's feature containing the point of internal edge `e` nearest to `x` (a segment's two
 /// edges are one caller edge: use edge 0). A hull's lid is no caller feature; it is reported as the
 /// caller's edge starting at the lid's first vertex (documented on [`Closest`]'s users).
+///
+/// Callers pass a point whose nearest point on the edge is strictly inside it (the foot of a canonical
+/// vertex–edge pair, or a contact point that is no vertex): then a polygon that kept every caller vertex
+/// maps the edge by indices alone, without predicates.
 pub(crate) fn caller_on_edge<K: Kernel>(poly: &ConvexPolygon, e: usize, x: DVec2) -> Feature {
-    let e = if poly.len() == 2 { 0 } else { e % poly.len() };
+    let n = poly.len();
+    if n >= 3 && poly.caller_len() == n && !poly.is_lid(e % n) {
+        // Internal edge e joins caller vertices s0 and s1, adjacent in the caller's ring (either order).
+        let (s0, s1) = (poly.source_index(e % n), poly.source_index((e + 1) % n));
+        return Feature::Edge(if s1 == (s0 + 1) % n { s0 } else { s1 });
+    }
+    let e = if n == 2 { 0 } else { e % n };
     poly.caller_feature_on_edge::<K>(e, x)
         .unwrap_or(Feature::Edge(poly.source_index(e)))
 }

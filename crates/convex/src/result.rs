@@ -98,6 +98,9 @@ pub struct SearchStats {
     /// Disjoint inputs on which Schwartz's answer failed the certificate too (possible only with an
     /// inexact kernel): the brute force answered.
     pub brute_fallbacks: u64,
+    /// Queries of [`distance_with`](crate::distance_with) on small polygons answered by the linear
+    /// walk's certified pair, without the search.
+    pub linear_walks: u64,
     /// Calls of [`distance_within`](crate::distance_within) answered by its early exit (a supporting
     /// line of `P` with all of `Q` more than `r` beyond it), without the full search.
     pub within_early_exits: u64,
@@ -109,7 +112,7 @@ pub struct SearchStats {
 
 std::thread_local! {
     static STATS: Cell<SearchStats> = const { Cell::new(SearchStats {
-        calls: 0, certificate_failures: 0, repaired_by_retry: 0, schwartz_fallbacks: 0, brute_fallbacks: 0, within_early_exits: 0,
+        calls: 0, certificate_failures: 0, repaired_by_retry: 0, schwartz_fallbacks: 0, brute_fallbacks: 0, linear_walks: 0, within_early_exits: 0,
         last_iterations: 0, last_bound: 0,
     }) };
 }

@@ -440,8 +440,11 @@ pub(crate) fn solve_yang<K: Kernel>(pp: &ConvexPolygon, qq: &ConvexPolygon) -> S
 /// The distance between two convex polygons (points and segments included) and their closest pair,
 /// or how they meet, deciding everything with the kernel `K`.
 ///
-/// Small inputs (`n·m <` [`SCAN_BELOW`]) are scanned ([`distance_brute`](crate::distance_brute));
-/// larger ones use [`distance_yang_with`]. Under the Robust and Exact kernels the reported features
+/// Tiny inputs (`n·m <` [`SCAN_BELOW`]) are scanned ([`distance_brute`](crate::distance_brute)). Two
+/// small polygons (`n + m < 64`) first try a linear walk around the implicit Minkowski difference in
+/// plain `f64` whose candidate pair must pass the exact Theorem-1 certificate (the walk decides
+/// nothing; a `parallel` pair is left to the search, so the answer never depends on the path). All
+/// other inputs use [`distance_yang_with`]. The answer is the same whichever path produced it. Under the Robust and Exact kernels the reported features
 /// realize the distance exactly and the outcome is exact; the numbers obey the crate's error budget.
 /// Under [`Fast`](polydist_polygon::predicates::Fast) the features may be wrong on near-degenerate
 /// input, but the call terminates within the same bounds and never panics.
@@ -464,11 +467,7 @@ pub(crate) fn solve_yang<K: Kernel>(pp: &ConvexPolygon, qq: &ConvexPolygon) -> S
 /// See [`distance_yang_with`].
 #[must_use]
 pub fn distance_with<K: Kernel>(p: &ConvexPolygon, q: &ConvexPolygon) -> Separation {
-    if p.len() * q.len() < SCAN_BELOW {
-        crate::distance_brute::<K>(p, q)
-    } else {
-        distance_yang_with::<K>(p, q)
-    }
+    crate::hint::solve::<K>(p, q).separation()
 }
 
 /// [`distance_with`] under the default [`Robust`] kernel: exact decisions, accurate numbers.

@@ -181,3 +181,35 @@ proptest! {
         }
     }
 }
+
+/// The small-input path of `distance_with` (a linear walk whose candidate the exact certificate
+/// accepts) gives exactly the search's answer, in every relation; and it answers most separated pairs.
+#[test]
+fn linear_walk_equals_the_search() {
+    use polydist_convex::polygon::ConvexPolygon;
+    use polydist_convex::{distance_with, distance_yang_with};
+    let mut rng = SplitMix64::new(41);
+    let (mut disjoint, mut walked) = (0u64, 0u64);
+    for rel in RELATIONS {
+        for round in 0..120 {
+            let (n, m) = (3 + round % 21, 3 + (round * 7) % 23);
+            let pair = convex_pair(&mut rng, n, m, rel);
+            let (pp, qq) = (
+                ConvexPolygon::try_new(&pair.p).expect("valid"),
+                ConvexPolygon::try_new(&pair.q).expect("valid"),
+            );
+            reset_search_stats();
+            let got = distance_with::<Robust>(&pp, &qq);
+            walked += search_stats().linear_walks;
+            assert_eq!(
+                got,
+                distance_yang_with::<Robust>(&pp, &qq),
+                "{rel:?}, n = {n}, m = {m}"
+            );
+            assert_eq!(got, distance_with::<Exact>(&pp, &qq), "{rel:?}, Exact");
+            disjoint += u64::from(got.closest().is_some());
+        }
+    }
+    println!("linear walk answered {walked} of {disjoint} disjoint small pairs");
+    assert!(walked * 10 >= disjoint * 6, "{walked} of {disjoint}");
+}
