@@ -1,5 +1,6 @@
 //! A distance query allocates nothing on the heap: `distance` and `distance_yang_with::<Robust>` on
-//! disjoint pairs of random convex polygons (3 … 4096 vertices), counted by a global allocator wrapper
+//! disjoint pairs (and, on the same sizes, `distance` and `contact_with` on overlapping pairs and
+//! `distance_within` on both sides of the threshold) of random convex polygons (3 … 4096 vertices), counted by a global allocator wrapper
 //! (`stats_alloc`).
 //!
 //! Scope: **generic** inputs (random float coordinates, no exact ties), where the Robust kernel's
@@ -15,7 +16,9 @@ use std::alloc::System;
 use glam::DVec2;
 use polydist_convex::polygon::ConvexPolygon;
 use polydist_convex::polygon::predicates::Robust;
-use polydist_convex::{Separation, distance, distance_yang_with};
+use polydist_convex::{
+    Contact, Separation, Within, contact_with, distance, distance_within, distance_yang_with,
+};
 use polydist_oracle::{SplitMix64, random_convex};
 use stats_alloc::{INSTRUMENTED_SYSTEM, Region, StatsAlloc};
 
@@ -68,6 +71,24 @@ fn robust_queries_do_not_allocate() {
                     );
                 }
                 assert_eq!(a.distance(), b.distance());
+                // Meeting inputs (the O(log) contact test after the search) and the threshold query.
+                // A copy shrunk by half about the vertex centroid: inside P, so overlapping.
+                let c = p.vertices().iter().copied().sum::<DVec2>() / p.len() as f64;
+                let moved: Vec<DVec2> = p.vertices().iter().map(|&v| c + (v - c) * 0.5).collect();
+                let overlapping = ConvexPolygon::try_new(&moved).expect("valid");
+                let region = Region::new(GLOBAL);
+                let e = distance(&p, &overlapping);
+                let f = contact_with::<Robust>(&p, &overlapping);
+                let g = distance_within::<Robust>(&p, &q, 0.5 * a.distance());
+                let h = distance_within::<Robust>(&p, &q, 2.0 * a.distance());
+                let change = region.change();
+                assert_eq!(
+                    (change.allocations, change.reallocations),
+                    (0, 0),
+                    "meeting / within, n = {n}, m = {m}, round {round}: {change:?}"
+                );
+                assert_eq!((e, f), (Separation::Overlapping, Contact::Overlapping));
+                assert!(matches!(g, Within::Beyond { .. }) && matches!(h, Within::Inside(_)));
                 queries += 4;
             }
         }
