@@ -89,7 +89,12 @@ impl Separation {
 pub struct SearchStats {
     /// Calls of the `O(log)` path ([`distance_yang_with`](crate::distance_yang_with)).
     pub calls: u64,
-    /// Answers of the first search that failed the certificate (includes every meeting input).
+    /// Guided searches (under the kernel's [`Guide`](polydist_polygon::predicates::Kernel::Guide), when it
+    /// differs from the kernel) whose candidate failed the certificate, so that the search ran again
+    /// under the kernel itself (includes every meeting input).
+    pub guide_failures: u64,
+    /// Answers of the first search under the kernel itself that failed the certificate (includes every
+    /// meeting input).
     pub certificate_failures: u64,
     /// Failures repaired by the second search, seeded from the first answer (still `O(log)`).
     pub repaired_by_retry: u64,
@@ -112,7 +117,7 @@ pub struct SearchStats {
 
 std::thread_local! {
     static STATS: Cell<SearchStats> = const { Cell::new(SearchStats {
-        calls: 0, certificate_failures: 0, repaired_by_retry: 0, schwartz_fallbacks: 0, brute_fallbacks: 0, linear_walks: 0, within_early_exits: 0,
+        calls: 0, guide_failures: 0, certificate_failures: 0, repaired_by_retry: 0, schwartz_fallbacks: 0, brute_fallbacks: 0, linear_walks: 0, within_early_exits: 0,
         last_iterations: 0, last_bound: 0,
     }) };
 }

@@ -20,6 +20,8 @@
 //! Running time: `O(log n + log m)` exact predicates when a certificate holds (every disjoint input
 //! tested so far) and for meeting polygons (the contact test); `O(log² (n + m))` in the worst case.
 
+use core::any::TypeId;
+
 use glam::DVec2;
 use polydist_polygon::ConvexPolygon;
 use polydist_polygon::predicates::{Kernel, Robust, Sign};
@@ -403,12 +405,26 @@ pub fn distance_yang_with<K: Kernel>(pp: &ConvexPolygon, qq: &ConvexPolygon) -> 
 pub(crate) fn solve_yang<K: Kernel>(pp: &ConvexPolygon, qq: &ConvexPolygon) -> Solved {
     let (p, q) = (pp.vertices(), qq.vertices());
     bump(|s| s.calls += 1);
-    let first = candidate::<K>(pp, qq);
-    if let Some(pair) = first {
+    // The search guided by `K::Guide` (plain f64 for the exact kernels) proposes; `K` certifies.
+    let guided = candidate::<K::Guide>(pp, qq).map(|pair| canonical::<K>(p, q, pair));
+    if let Some(pair) = guided {
         if certify::<K>(p, q, pair) {
             return Solved::Disjoint(finish::<K>(pp, qq, pair), pair);
         }
     }
+    let first = if TypeId::of::<K>() == TypeId::of::<K::Guide>() {
+        guided
+    } else {
+        // The guide was misled (near-degenerate input) or the polygons meet: the search under `K`.
+        bump(|s| s.guide_failures += 1);
+        let first = candidate::<K>(pp, qq);
+        if let Some(pair) = first {
+            if certify::<K>(p, q, pair) {
+                return Solved::Disjoint(finish::<K>(pp, qq, pair), pair);
+            }
+        }
+        first
+    };
     bump(|s| s.certificate_failures += 1);
     if let (Some(mut pair), true) = (first, p.len() >= 3 && q.len() >= 3) {
         // Reseed from the candidate's own direction, which is close to u when the candidate is close

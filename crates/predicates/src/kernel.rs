@@ -28,6 +28,14 @@ pub trait Kernel: Copy + Default + Debug + Send + Sync + 'static {
     /// `true` when every decision is exact (Robust and Exact).
     const EXACT_DECISIONS: bool;
 
+    /// The kernel that may *guide* a search whose result this kernel then certifies: an algorithm may
+    /// run a search under `Guide` to propose a candidate and accept it only after a certificate
+    /// evaluated under `Self` (for example Theorem 1 for a closest pair), falling back to the search
+    /// under `Self` when the certificate fails. Nothing the guide decides reaches the output unchecked.
+    /// [`Fast`] for the three kernels (the guidance is plain `f64`); a wrapper such as
+    /// [`Counted`](crate::Counted) wraps the guide too, so counts include the guided work.
+    type Guide: Kernel;
+
     /// The sign of the homogeneous polynomial `p` at the inputs `x` (see [`Polynomial`]).
     fn sign<const N: usize, P: Polynomial<N> + ?Sized>(p: &P, x: &[f64; N]) -> Sign;
 
@@ -259,6 +267,7 @@ pub struct Fast;
 
 impl Kernel for Fast {
     const NAME: &'static str = "fast";
+    type Guide = Fast;
     const EXACT_DECISIONS: bool = false;
     #[inline(always)]
     fn sign<const N: usize, P: Polynomial<N> + ?Sized>(p: &P, x: &[f64; N]) -> Sign {
@@ -337,6 +346,7 @@ fn filter_squares(s12: f64, s34: f64) -> Option<Sign> {
 
 impl Kernel for Robust {
     const NAME: &'static str = "robust";
+    type Guide = Fast;
     const EXACT_DECISIONS: bool = true;
 
     #[inline(always)]
@@ -425,6 +435,7 @@ pub struct Exact;
 
 impl Kernel for Exact {
     const NAME: &'static str = "exact";
+    type Guide = Fast;
     const EXACT_DECISIONS: bool = true;
     #[inline]
     fn sign<const N: usize, P: Polynomial<N> + ?Sized>(p: &P, x: &[f64; N]) -> Sign {

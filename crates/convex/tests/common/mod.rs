@@ -276,6 +276,7 @@ pub(crate) struct Chaos;
 impl Kernel for Chaos {
     const NAME: &'static str = "chaos";
     const EXACT_DECISIONS: bool = false;
+    type Guide = Chaos;
     fn sign<const N: usize, P: Polynomial<N> + ?Sized>(_: &P, _: &[f64; N]) -> Sign {
         CHAOS.with(|c| {
             let mut z = c.get().wrapping_add(0x9e37_79b9_7f4a_7c15);
