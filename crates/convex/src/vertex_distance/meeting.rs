@@ -18,9 +18,8 @@ use polydist_polygon::predicates::{Kernel, Polynomial, Ring as Arith, Sign};
 use super::chain::Best;
 use super::stats::bump;
 use super::tenstep::{Ring, scan_all, tenstep};
-use crate::hint::{Solved, solve};
-use crate::pair::certify;
-use crate::yang::candidate;
+use crate::pair::{Pair, canonical, certify};
+use crate::yang::{RESEEDS, Up, candidate, search};
 
 /// Below this many vertex pairs (or with a point or a segment on one side) a node is scanned.
 const SCAN_PAIRS: usize = 64;
@@ -81,54 +80,59 @@ pub(super) fn meeting<K: Kernel>(p: Ring<'_>, q: Ring<'_>, best: &mut Best) {
         bump(|s| s.brute_nodes += 1);
         scan_all::<K>(c.ring(), d.ring(), best);
     } else {
-        split::<K>(c, d, best);
+        split::<K>(c, d, false, best);
     }
 }
 
-/// The certified bridge of two parts, or `None`. `separated` parts (strictly on two sides of a line)
-/// go through the full `O(log)` search with its repairs; others only through the search and its
-/// `O(1)` certificate, so that meeting parts cost `O(log)`, not a contact test.
-fn bridge<K: Kernel>(c: &Part, d: &Part, separated: bool) -> Option<crate::pair::Pair> {
+/// The certified bridge of two parts, or `None`: the `O(log)` search and its `O(1)` Theorem-1
+/// certificate, reseeded from its own answer like [`distance_yang_with`](crate::distance_yang_with)
+/// does, but without its contact test and brute-force fallback (`O(s log s)` and `O(s²)`): a part
+/// without a certified bridge is split instead.
+fn bridge<K: Kernel>(c: &Part, d: &Part) -> Option<Pair> {
     let pc = ConvexPolygon::try_new(&c.pts).ok()?;
     let pd = ConvexPolygon::try_new(&d.pts).ok()?;
     // A subset of a strictly convex ring is kept whole, in order, from its first vertex.
     if pc.len() != c.len() || pd.len() != d.len() {
         return None;
     }
-    if separated {
-        match solve::<K>(&pc, &pd) {
-            Solved::Disjoint(_, pair) => Some(pair),
-            Solved::Meeting(_) => None,
+    let (p, q) = (&c.pts[..], &d.pts[..]);
+    let mut pair = candidate::<K>(&pc, &pd)?;
+    for _ in 0..=RESEEDS {
+        if certify::<K>(p, q, pair) {
+            return Some(pair);
         }
-    } else {
-        candidate::<K>(&pc, &pd).filter(|&pair| certify::<K>(&c.pts, &d.pts, pair))
+        let again = canonical::<K>(p, q, search::<K>(p, q, Up::of_pair::<K>(p, q, pair)).0);
+        if again == pair {
+            break;
+        }
+        pair = again;
     }
+    None
 }
 
-/// Answers the node `(c, d)`.
+/// Answers the node `(c, d)`; `separated` when a split line is known to separate them strictly.
 fn node<K: Kernel>(c: Part, d: Part, separated: bool, best: &mut Best) {
     if c.len() <= 2 || d.len() <= 2 || c.len() * d.len() <= SCAN_PAIRS {
         bump(|s| s.brute_nodes += 1);
         scan_all::<K>(c.ring(), d.ring(), best);
         return;
     }
-    match bridge::<K>(&c, &d, separated) {
+    match bridge::<K>(&c, &d) {
         Some(pair) => {
             bump(|s| s.separated_nodes += 1);
             tenstep::<K>(c.ring(), d.ring(), pair, best);
         }
-        // Strictly separated parts always have a bridge under exact predicates; a non-exact kernel
-        // may disagree: scan rather than recurse.
-        None if separated => {
-            bump(|s| s.brute_nodes += 1);
-            scan_all::<K>(c.ring(), d.ring(), best);
+        None => {
+            if separated {
+                bump(|s| s.uncertified_separated_nodes += 1);
+            }
+            split::<K>(c, d, separated, best);
         }
-        None => split::<K>(c, d, best),
     }
 }
 
 /// Splits the larger part (at least 3 vertices) and answers the four products.
-fn split<K: Kernel>(c: Part, d: Part, best: &mut Best) {
+fn split<K: Kernel>(c: Part, d: Part, separated: bool, best: &mut Best) {
     bump(|s| s.split_nodes += 1);
     let c_larger = c.len() >= d.len();
     let (big, small) = if c_larger { (&c, &d) } else { (&d, &c) };
@@ -170,8 +174,8 @@ fn split<K: Kernel>(c: Part, d: Part, best: &mut Best) {
     let children = [
         (big1.clone(), small2.clone(), true),
         (big2.clone(), small1.clone(), true),
-        (big1, small1, false),
-        (big2, small2, false),
+        (big1, small1, separated),
+        (big2, small2, separated),
     ];
     for (x, y, separated) in children {
         if x.len() == 0 || y.len() == 0 {

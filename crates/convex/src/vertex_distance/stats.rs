@@ -36,9 +36,10 @@ pub struct VertexDistanceCounts {
     pub split_nodes: u64,
     /// Sub-problems of the recursive split answered by TENSTEP (certified separated).
     pub separated_nodes: u64,
-    /// Sub-problems of the recursive split answered by brute force (small, or not certified under a
-    /// non-exact kernel).
+    /// Sub-problems of the recursive split answered by brute force (small ones).
     pub brute_nodes: u64,
+    /// Strictly separated sub-problems whose `O(log)` search found no certified bridge (split further).
+    pub uncertified_separated_nodes: u64,
 }
 
 std::thread_local! {
@@ -46,6 +47,7 @@ std::thread_local! {
         calls: 0, bridge_vertex_vertex: 0, bridge_edge_on_p: 0, bridge_edge_on_q: 0, small_scans: 0,
         cases: [0; 10], sub_cases_6: [0; 4], sub_cases_8: [0; 4], horizontal_extremes: [0; 4],
         meeting_inputs: 0, split_nodes: 0, separated_nodes: 0, brute_nodes: 0,
+        uncertified_separated_nodes: 0,
     }) };
 }
 
