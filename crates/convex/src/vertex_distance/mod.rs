@@ -30,6 +30,8 @@ mod meeting;
 mod scanset;
 mod stats;
 mod tenstep;
+#[cfg(test)]
+mod tests;
 
 use polydist_polygon::ConvexPolygon;
 use polydist_polygon::predicates::{Kernel, Robust};

@@ -35,6 +35,8 @@ pub(super) fn userng<K: Kernel>(rows: &Chain<'_>, columns: &Chain<'_>, best: &mu
     if rows.is_empty() || columns.is_empty() {
         return;
     }
+    #[cfg(test)]
+    record::push(rows, columns);
     let m = monotone_minima::from_fn(rows.len(), columns.len(), |i, j| {
         (rows.pt(i), columns.pt(j))
     });
@@ -44,5 +46,33 @@ pub(super) fn userng<K: Kernel>(rows: &Chain<'_>, columns: &Chain<'_>, best: &mu
         if j < columns.len() {
             best.offer_chains::<K>(rows, i, columns, j);
         }
+    }
+}
+
+/// Test-only record of every USERNG block, to check each one is totally monotone.
+#[cfg(test)]
+pub(in crate::vertex_distance) mod record {
+    use core::cell::RefCell;
+
+    use glam::DVec2;
+
+    use super::Chain;
+
+    /// Rows and columns of one block, in the order given to SMAWK.
+    pub(in crate::vertex_distance) type Block = (Vec<DVec2>, Vec<DVec2>);
+
+    std::thread_local! {
+        static BLOCKS: RefCell<Vec<Block>> = const { RefCell::new(Vec::new()) };
+    }
+
+    /// Records a block.
+    pub(super) fn push(rows: &Chain<'_>, columns: &Chain<'_>) {
+        let pts = |c: &Chain<'_>| (0..c.len()).map(|k| c.pt(k)).collect::<Vec<_>>();
+        BLOCKS.with(|b| b.borrow_mut().push((pts(rows), pts(columns))));
+    }
+
+    /// The blocks recorded on this thread since the last call.
+    pub(in crate::vertex_distance) fn take() -> Vec<Block> {
+        BLOCKS.with(|b| core::mem::take(&mut *b.borrow_mut()))
     }
 }

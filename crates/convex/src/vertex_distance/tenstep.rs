@@ -66,45 +66,25 @@ fn extreme<K: Kernel>(ring: &[DVec2], f: &Frame, top: bool, later: bool) -> (usi
     }
 }
 
-/// TENSTEP for `P` and `Q` at positive distance with the canonical certified bridge `pair` (internal
-/// indices of `p.pts`, `q.pts`): offers the nearest vertex pair to `best`. `O(m + n)` predicates.
-pub(super) fn tenstep<K: Kernel>(p: Ring<'_>, q: Ring<'_>, pair: Pair, best: &mut Best) {
+/// The four chains of steps 4–5 and the frame.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Chains<'a> {
+    /// `V_L`: `v_max` to `v_min` counter-clockwise (top to bottom).
+    pub(super) v_l: Chain<'a>,
+    /// `V_R`: `v_min` to `v_max` counter-clockwise (bottom to top).
+    pub(super) v_r: Chain<'a>,
+    /// `W_L`: `w_max` to `w_min` counter-clockwise (top to bottom).
+    pub(super) w_l: Chain<'a>,
+    /// `W_R`: `w_min` to `w_max` counter-clockwise (bottom to top).
+    pub(super) w_r: Chain<'a>,
+    /// The bridge frame.
+    pub(super) f: Frame,
+}
+
+/// Steps 2–5 in the frame whose "up" is `t1 − t0`: the extremes with the paper's tie rules, and the
+/// chains they delimit (`p`, `q` with at least 3 vertices each).
+pub(super) fn chains<'a, K: Kernel>(p: Ring<'a>, q: Ring<'a>, t0: DVec2, t1: DVec2) -> Chains<'a> {
     let (v, w) = (p.pts, q.pts);
-    let (m, n) = (v.len(), w.len());
-    if m == 0 || n == 0 {
-        return;
-    }
-    if m <= 2 || n <= 2 {
-        // A point or a segment: one linear scan (SCANSET over at most two points).
-        bump(|s| s.small_scans += 1);
-        scan_all::<K>(p, q, best);
-        return;
-    }
-    // Step 1 and Lemma 1: a vertex–vertex bridge is the answer. Otherwise the bridge is perpendicular
-    // to its edge, which gives the frame (steps 2–3).
-    let (t0, t1) = match pair {
-        Pair::Vv(i, j) => {
-            bump(|s| s.bridge_vertex_vertex += 1);
-            let (i, j) = (i % m, j % n);
-            best.offer::<K>(Cand {
-                p: v[i],
-                q: w[j],
-                i: p.caller[i],
-                j: q.caller[j],
-            });
-            return;
-        }
-        // P's edge (v_i, v_{i+1}) is counter-clockwise with Q on its right: up = v_{i+1} − v_i.
-        Pair::Ev(i, _) => {
-            bump(|s| s.bridge_edge_on_p += 1);
-            (v[i % m], v[(i + 1) % m])
-        }
-        // Q's edge (w_j, w_{j+1}) has P on its right: up = w_j − w_{j+1}.
-        Pair::Ve(_, j) => {
-            bump(|s| s.bridge_edge_on_q += 1);
-            (w[(j + 1) % n], w[j % n])
-        }
-    };
     let f = Frame {
         t0,
         t1,
@@ -122,10 +102,68 @@ pub(super) fn tenstep<K: Kernel>(p: Ring<'_>, q: Ring<'_>, pair: Pair, best: &mu
             *c += u64::from(hit);
         }
     });
-    let v_l = Chain::ccw(v, p.caller, true, v_max, v_min);
-    let v_r = Chain::ccw(v, p.caller, true, v_min, v_max);
-    let w_r = Chain::ccw(w, q.caller, false, w_min, w_max);
-    let w_l = Chain::ccw(w, q.caller, false, w_max, w_min);
+    Chains {
+        v_l: Chain::ccw(v, p.caller, true, v_max, v_min),
+        v_r: Chain::ccw(v, p.caller, true, v_min, v_max),
+        w_l: Chain::ccw(w, q.caller, false, w_max, w_min),
+        w_r: Chain::ccw(w, q.caller, false, w_min, w_max),
+        f,
+    }
+}
+
+/// The frame's up direction `(t0, t1)` from a canonical bridge pair, or `None` for a vertex–vertex
+/// bridge. The bridge is perpendicular to its edge (first-order optimality at an edge-interior foot).
+pub(super) fn bridge_up(v: &[DVec2], w: &[DVec2], pair: Pair) -> Option<(DVec2, DVec2)> {
+    let (m, n) = (v.len(), w.len());
+    match pair {
+        Pair::Vv(..) => None,
+        // P's edge (v_i, v_{i+1}) is counter-clockwise with Q on its right: up = v_{i+1} − v_i.
+        Pair::Ev(i, _) => Some((v[i % m], v[(i + 1) % m])),
+        // Q's edge (w_j, w_{j+1}) has P on its right: up = w_j − w_{j+1}.
+        Pair::Ve(_, j) => Some((w[(j + 1) % n], w[j % n])),
+    }
+}
+
+/// TENSTEP for `P` and `Q` at positive distance with the canonical certified bridge `pair` (internal
+/// indices of `p.pts`, `q.pts`): offers the nearest vertex pair to `best`. `O(m + n)` predicates.
+pub(super) fn tenstep<K: Kernel>(p: Ring<'_>, q: Ring<'_>, pair: Pair, best: &mut Best) {
+    let (v, w) = (p.pts, q.pts);
+    let (m, n) = (v.len(), w.len());
+    if m == 0 || n == 0 {
+        return;
+    }
+    if m <= 2 || n <= 2 {
+        // A point or a segment: one linear scan (SCANSET over at most two points).
+        bump(|s| s.small_scans += 1);
+        scan_all::<K>(p, q, best);
+        return;
+    }
+    // Step 1 and Lemma 1: a vertex–vertex bridge is the answer. Otherwise the bridge is perpendicular
+    // to its edge, which gives the frame (steps 2–3).
+    let Some((t0, t1)) = bridge_up(v, w, pair) else {
+        bump(|s| s.bridge_vertex_vertex += 1);
+        if let Pair::Vv(i, j) = pair {
+            let (i, j) = (i % m, j % n);
+            best.offer::<K>(Cand {
+                p: v[i],
+                q: w[j],
+                i: p.caller[i],
+                j: q.caller[j],
+            });
+        }
+        return;
+    };
+    match pair {
+        Pair::Ev(..) => bump(|s| s.bridge_edge_on_p += 1),
+        _ => bump(|s| s.bridge_edge_on_q += 1),
+    }
+    let Chains {
+        v_l,
+        v_r,
+        w_l,
+        w_r,
+        f,
+    } = chains::<K>(p, q, t0, t1);
     // W_L listed upward (w_min, …, w_max) and V_R listed upward (v_min, …, v_max) satisfy Lemma 6.
     let w_l_up = w_l.rev();
     findmin::<K>(&v_l, &w_l_up, best); // step 6
