@@ -435,6 +435,41 @@ fn fast_kernel_terminates_and_is_measured() {
         total += 4;
         wrong += check_all::<Fast>(&a, &b);
     }
+    // Near-ties a few ulps apart: a co-circular arc (radius 5^20 ≈ 9.5e13) with one vertex moved 1–3 ulps
+    // inward, against a triangle at the centre (squared distances differ in their last bits).
+    let tri = [DVec2::ZERO, DVec2::new(-1.0, 2.0), DVec2::new(-1.0, -2.0)];
+    let circle = cocircular(20);
+    for index in (0..circle.len()).filter(|&i| 2.0 * circle[i].y.abs() <= circle[i].x) {
+        for steps in 1..=3 {
+            let moved = cocircular_perturbed(20, index, -steps);
+            let arc: Vec<DVec2> = moved
+                .iter()
+                .copied()
+                .filter(|a| 2.0 * a.y.abs() <= a.x)
+                .collect();
+            total += 4;
+            wrong += check_all::<Fast>(&tri, &arc);
+            check_all::<Robust>(&tri, &arc);
+        }
+        // The smaller coordinate moved one ulp toward 0: the squared distance drops by far less than
+        // one ulp of itself, below what plain f64 can see.
+        let mut arc: Vec<DVec2> = circle
+            .iter()
+            .copied()
+            .filter(|a| 2.0 * a.y.abs() <= a.x)
+            .collect();
+        let k = arc
+            .iter()
+            .position(|&a| a == circle[index])
+            .expect("on the arc");
+        if arc[k].y != 0.0 {
+            let y = arc[k].y;
+            arc[k].y = if y > 0.0 { y.next_down() } else { y.next_up() };
+            total += 4;
+            wrong += check_all::<Fast>(&tri, &arc);
+            check_all::<Robust>(&tri, &arc);
+        }
+    }
     println!("Fast kernel: {wrong} wrong answers out of {total}");
 }
 

@@ -7,7 +7,7 @@ use common::disjoint_pair;
 use glam::DVec2;
 use polydist_convex::polygon::ConvexPolygon;
 use polydist_convex::polygon::predicates::{
-    Counted, Robust, predicate_counts, reset_predicate_counts,
+    Counted, PredicateCounts, Robust, predicate_counts, reset_predicate_counts,
 };
 use polydist_convex::{
     min_vertex_distance_with, reset_vertex_distance_case_counts, vertex_distance_case_counts,
@@ -22,9 +22,14 @@ const PER_N_LOG_N: f64 = 10.0;
 
 /// The predicates `K = Counted<Robust>` evaluates for one call.
 fn count(p: &ConvexPolygon, q: &ConvexPolygon) -> u64 {
+    counts(p, q).total()
+}
+
+/// The predicates of each kind `K = Counted<Robust>` evaluates for one call.
+fn counts(p: &ConvexPolygon, q: &ConvexPolygon) -> PredicateCounts {
     reset_predicate_counts();
     let _ = min_vertex_distance_with::<Counted<Robust>>(p, q);
-    predicate_counts().total()
+    predicate_counts()
 }
 
 #[test]
@@ -54,8 +59,13 @@ fn disjoint_is_linear() {
                 ConvexPolygon::try_new(&p).expect("valid"),
                 ConvexPolygon::try_new(&q).expect("valid"),
             );
-            let c = count(&pp, &qq);
+            let all = counts(&pp, &qq);
+            let c = all.total();
             let ratio = c as f64 / (pp.len() + qq.len()) as f64;
+            // FINDMIN is the only user of the nearer-of-two comparison: Lemmas 9–10 bound each call by
+            // 3(β − 1) + 2α, and steps 6–8 sum to at most 8n + 5m + 4 (chains share end vertices).
+            let (mm, nn) = (pp.len() as u64, qq.len() as u64);
+            assert!(all.cmp_dist <= 8 * nn + 5 * mm + 4, "FINDMIN: {all:?}");
             worst = worst.max(ratio);
             assert!(
                 ratio <= PER_VERTEX,
