@@ -62,18 +62,24 @@ impl<'a> Chain<'a> {
         self.on_p
     }
 
-    /// The ring index of element `k` (`k ≤ len`).
+    /// The ring index of element `k` (`k ≤ len ≤ n`; larger `k` wrap around). No division on the
+    /// hot path: `start < n` and `k < n` keep one conditional subtraction enough.
+    #[inline]
     fn index(&self, k: usize) -> usize {
         let n = self.ring.len();
-        let k = k % n;
+        let k = if k < n { k } else { k % n };
         if self.ccw {
-            (self.start + k) % n
+            let i = self.start + k;
+            if i >= n { i - n } else { i }
+        } else if k <= self.start {
+            self.start - k
         } else {
-            (self.start + n - k) % n
+            self.start + n - k
         }
     }
 
     /// Element `k`.
+    #[inline]
     pub(super) fn pt(&self, k: usize) -> DVec2 {
         self.ring[self.index(k)]
     }
