@@ -14,8 +14,8 @@ use polydist_convex::{
 };
 use polydist_oracle::{Relation, SplitMix64, convex_pair, random_convex};
 
-/// Predicates per vertex allowed for disjoint polygons (measured: at most 11 at n = 16, about 7 from
-/// n = 2⁸ to 2¹⁷).
+/// Predicates per vertex allowed for disjoint polygons (measured: at most 11 at n = 16, about 5 from
+/// n = 2¹⁰ to 2¹⁷).
 const PER_VERTEX: f64 = 12.0;
 /// Predicates per `N log₂ N` allowed for meeting polygons (measured: at most 7.7, about 4 at 2¹⁵).
 const PER_N_LOG_N: f64 = 10.0;

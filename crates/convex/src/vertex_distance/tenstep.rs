@@ -9,7 +9,7 @@
 use core::cmp::Ordering;
 
 use glam::DVec2;
-use polydist_polygon::predicates::Kernel;
+use polydist_polygon::predicates::{Kernel, Sign};
 
 use super::cases::step9;
 use super::chain::{Best, Cand, Chain, Frame};
@@ -40,22 +40,16 @@ pub(super) fn scan_all<K: Kernel>(p: Ring<'_>, q: Ring<'_>, best: &mut Best) {
 
 /// The vertex of `ring` extreme in `Y` (the top when `top`), with the paper's tie rule for a
 /// horizontal extreme edge `(r_i, r_{i+1})`: `r_{i+1}` when `later`, else `r_i`. Returns the index and
-/// whether the tie rule applied.
+/// whether the tie rule applied. `Y` is linear, hence unimodal along a strictly convex ring: the
+/// binary search of `extreme.rs` finds a maximizer in `O(log n)` (the paper scans, `O(n)`).
 fn extreme<K: Kernel>(ring: &[DVec2], f: &Frame, top: bool, later: bool) -> (usize, bool) {
     let n = ring.len();
-    let want = if top {
-        Ordering::Greater
-    } else {
-        Ordering::Less
-    };
-    let mut k = 0;
-    for i in 1..n {
-        if f.ycmp::<K>(ring[i], ring[k]) == want {
-            k = i;
-        }
-    }
-    // k is the first extreme in index order; a tied neighbour (a horizontal edge) is k + 1, or k − 1
-    // when the edge is (r_{n−1}, r_0). Of the edge (r_i, r_{i+1}) keep r_{i+1} when `later`, else r_i.
+    let k = crate::extreme::extreme(ring, |x, y| {
+        let o = f.ycmp::<K>(x, y);
+        Sign::from_ordering(if top { o } else { o.reverse() })
+    }) % n;
+    // A tied neighbour (a horizontal edge) is k + 1 or k − 1. Of the edge (r_i, r_{i+1}) keep r_{i+1}
+    // when `later`, else r_i.
     let (next, prev) = ((k + 1) % n, (k + n - 1) % n);
     if f.ycmp::<K>(ring[next], ring[k]) == Ordering::Equal {
         (if later { next } else { k }, true)
