@@ -2,7 +2,7 @@
 //! each polygon, that minimizes `|v_i − w_j|`.
 //!
 //! M. McKenna and G. T. Toussaint, "Finding the minimum vertex distance between two disjoint convex
-//! polygons in linear time", *Computers & Mathematics with Applications* 11(12), 1985: `O(m + n)` for
+//! polygons in linear time", *Computers & Mathematics with Applications*, 1985: `O(m + n)` for
 //! linearly separable polygons, optimal (their Theorem 3). The files follow the paper:
 //!
 //! - `tenstep`: PROCEDURE TENSTEP (§3) from the bridge of the `O(log m + log n)` distance
@@ -144,7 +144,7 @@ fn ring<'a>(poly: &'a ConvexPolygon, caller: &'a [usize]) -> Ring<'a> {
 ///
 /// # References
 /// M. McKenna, G. T. Toussaint, "Finding the minimum vertex distance between two disjoint convex
-/// polygons in linear time", Comp. & Maths. with Appls. 11(12), 1985, 1227–1242. USERNG's substitute:
+/// polygons in linear time", Comp. & Maths. with Appls., 1985. USERNG's substitute:
 /// A. Aggarwal, M. M. Klawe, S. Moran, P. Shor, R. Wilber, "Geometric applications of a
 /// matrix-searching algorithm", Algorithmica 2, 1987.
 #[must_use]
