@@ -314,7 +314,13 @@ mod tests {
     fn reductions_map_cases_as_the_paper_says() {
         let ring = [glam::DVec2::ZERO, glam::DVec2::X, glam::DVec2::Y];
         let caller = [0, 1, 2];
-        let c = Chain::ccw(&ring, &caller, true, 0, 2);
+        let c = Chain::ccw(
+            &ring,
+            super::super::chain::Callers::Table(&caller),
+            true,
+            0,
+            2,
+        );
         let f = Frame {
             t0: glam::DVec2::ZERO,
             t1: glam::DVec2::Y,

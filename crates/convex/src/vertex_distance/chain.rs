@@ -8,7 +8,29 @@
 use core::cmp::Ordering;
 
 use glam::DVec2;
+use polydist_polygon::ConvexPolygon;
 use polydist_polygon::predicates::{Kernel, Sign};
+
+/// The caller's index of each vertex of a ring, looked up only when a candidate is offered.
+#[derive(Clone, Copy, Debug)]
+pub(super) enum Callers<'a> {
+    /// A validated polygon's own map ([`ConvexPolygon::source_index`]): no copy, so a call that stops
+    /// at step 1 stays `O(log)`.
+    Polygon(&'a ConvexPolygon),
+    /// A table (the vertex subsets of the recursive split).
+    Table(&'a [usize]),
+}
+
+impl Callers<'_> {
+    /// The caller's index of ring vertex `i`.
+    #[inline]
+    pub(super) fn get(&self, i: usize) -> usize {
+        match self {
+            Callers::Polygon(p) => p.source_index(i),
+            Callers::Table(t) => t[i],
+        }
+    }
+}
 
 /// `len` consecutive vertices of a ring, the `k`-th at ring index `start ± k` (mod the ring's length).
 #[derive(Clone, Copy, Debug)]
@@ -16,7 +38,7 @@ pub(super) struct Chain<'a> {
     /// The ring's vertices (counter-clockwise, strictly convex).
     ring: &'a [DVec2],
     /// The caller's index of each ring vertex.
-    caller: &'a [usize],
+    caller: Callers<'a>,
     /// Whether the ring is `P` (else `Q`).
     on_p: bool,
     /// Ring index of element 0.
@@ -31,7 +53,7 @@ impl<'a> Chain<'a> {
     /// The counter-clockwise chain from ring index `from` to ring index `to`, both included.
     pub(super) fn ccw(
         ring: &'a [DVec2],
-        caller: &'a [usize],
+        caller: Callers<'a>,
         on_p: bool,
         from: usize,
         to: usize,
@@ -86,7 +108,7 @@ impl<'a> Chain<'a> {
 
     /// The caller's index of element `k`.
     pub(super) fn caller(&self, k: usize) -> usize {
-        self.caller[self.index(k)]
+        self.caller.get(self.index(k))
     }
 
     /// The last element (`len ≥ 1`).

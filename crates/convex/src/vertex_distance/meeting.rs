@@ -15,7 +15,7 @@ use glam::DVec2;
 use polydist_polygon::ConvexPolygon;
 use polydist_polygon::predicates::{Kernel, Polynomial, Ring as Arith, Sign};
 
-use super::chain::Best;
+use super::chain::{Best, Callers};
 use super::stats::bump;
 use super::tenstep::{Ring, scan_all, tenstep};
 use crate::pair::{Pair, canonical, certify};
@@ -52,7 +52,7 @@ impl Part {
     fn ring(&self) -> Ring<'_> {
         Ring {
             pts: &self.pts,
-            caller: &self.caller,
+            caller: Callers::Table(&self.caller),
         }
     }
 
@@ -73,7 +73,7 @@ pub(super) fn meeting<K: Kernel>(p: Ring<'_>, q: Ring<'_>, best: &mut Best) {
     bump(|s| s.meeting_inputs += 1);
     let part = |r: Ring<'_>| Part {
         pts: r.pts.to_vec(),
-        caller: r.caller.to_vec(),
+        caller: (0..r.pts.len()).map(|i| r.caller.get(i)).collect(),
     };
     let (c, d) = (part(p), part(q));
     if c.len() <= 2 || d.len() <= 2 || c.len() * d.len() <= SCAN_PAIRS {

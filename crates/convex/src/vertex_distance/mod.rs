@@ -40,7 +40,7 @@ pub use stats::{
     VertexDistanceCounts, reset_vertex_distance_case_counts, vertex_distance_case_counts,
 };
 
-use self::chain::{Best, Cand};
+use self::chain::{Best, Callers, Cand};
 use self::stats::bump;
 use self::tenstep::{Ring, scan_all};
 use crate::hint::{Solved, solve};
@@ -63,18 +63,12 @@ pub struct VertexDistance {
     pub vertex_q: usize,
 }
 
-/// The caller's index of every vertex of `poly`.
-fn callers(poly: &ConvexPolygon) -> Vec<usize> {
-    (0..poly.len()).map(|i| poly.source_index(i)).collect()
-}
-
 /// The answer from the best candidate (every path offers at least one pair of non-empty polygons).
 fn answer<K: Kernel>(p: &ConvexPolygon, q: &ConvexPolygon, best: Best) -> VertexDistance {
     let c = best.cand.unwrap_or_else(|| {
         // Unreachable for validated polygons (at least one vertex each); kept total without a panic.
-        let (cp, cq) = (callers(p), callers(q));
         let mut b = Best::default();
-        scan_all::<K>(ring(p, &cp), ring(q, &cq), &mut b);
+        scan_all::<K>(ring(p), ring(q), &mut b);
         b.cand.unwrap_or(Cand {
             p: p.vertices()[0],
             q: q.vertices()[0],
@@ -91,10 +85,11 @@ fn answer<K: Kernel>(p: &ConvexPolygon, q: &ConvexPolygon, best: Best) -> Vertex
     }
 }
 
-fn ring<'a>(poly: &'a ConvexPolygon, caller: &'a [usize]) -> Ring<'a> {
+/// A validated polygon as one side of the problem.
+fn ring(poly: &ConvexPolygon) -> Ring<'_> {
     Ring {
         pts: poly.vertices(),
-        caller,
+        caller: Callers::Polygon(poly),
     }
 }
 
@@ -150,8 +145,7 @@ fn ring<'a>(poly: &'a ConvexPolygon, caller: &'a [usize]) -> Ring<'a> {
 #[must_use]
 pub fn min_vertex_distance_with<K: Kernel>(p: &ConvexPolygon, q: &ConvexPolygon) -> VertexDistance {
     bump(|s| s.calls += 1);
-    let (cp, cq) = (callers(p), callers(q));
-    let (rp, rq) = (ring(p, &cp), ring(q, &cq));
+    let (rp, rq) = (ring(p), ring(q));
     let mut best = Best::default();
     match solve::<K>(p, q) {
         Solved::Disjoint(_, pair) => tenstep::tenstep::<K>(rp, rq, pair, &mut best),
@@ -214,8 +208,7 @@ pub fn min_vertex_distance_brute<K: Kernel>(
     p: &ConvexPolygon,
     q: &ConvexPolygon,
 ) -> VertexDistance {
-    let (cp, cq) = (callers(p), callers(q));
     let mut best = Best::default();
-    scan_all::<K>(ring(p, &cp), ring(q, &cq), &mut best);
+    scan_all::<K>(ring(p), ring(q), &mut best);
     answer::<K>(p, q, best)
 }

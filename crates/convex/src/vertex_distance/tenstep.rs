@@ -12,7 +12,7 @@ use glam::DVec2;
 use polydist_polygon::predicates::{Kernel, Sign};
 
 use super::cases::step9;
-use super::chain::{Best, Cand, Chain, Frame};
+use super::chain::{Best, Callers, Cand, Chain, Frame};
 use super::findmin::findmin;
 use super::stats::bump;
 use crate::pair::Pair;
@@ -21,7 +21,7 @@ use crate::pair::Pair;
 #[derive(Clone, Copy, Debug)]
 pub(super) struct Ring<'a> {
     pub(super) pts: &'a [DVec2],
-    pub(super) caller: &'a [usize],
+    pub(super) caller: Callers<'a>,
 }
 
 /// Offers every pair of `p × q` (the brute force, and the scan for a point or a segment).
@@ -31,8 +31,8 @@ pub(super) fn scan_all<K: Kernel>(p: Ring<'_>, q: Ring<'_>, best: &mut Best) {
             best.offer::<K>(Cand {
                 p: a,
                 q: b,
-                i: p.caller[i],
-                j: q.caller[j],
+                i: p.caller.get(i),
+                j: q.caller.get(j),
             });
         }
     }
@@ -141,8 +141,8 @@ pub(super) fn tenstep<K: Kernel>(p: Ring<'_>, q: Ring<'_>, pair: Pair, best: &mu
             best.offer::<K>(Cand {
                 p: v[i],
                 q: w[j],
-                i: p.caller[i],
-                j: q.caller[j],
+                i: p.caller.get(i),
+                j: q.caller.get(j),
             });
         }
         return;

@@ -10,9 +10,10 @@ use polydist_polygon::predicates::Robust;
 use polydist_polygon::{ConvexPolygon, convex_hull};
 
 use super::cases::{Hidden, hidden};
+use super::chain::Callers;
+use super::min_vertex_distance_with;
 use super::scanset::record;
 use super::tenstep::{Ring, bridge_up, chains};
-use super::{callers, min_vertex_distance_with};
 use crate::hint::{Solved, solve};
 
 /// Disjoint pairs of many shapes, with their mirror images and swaps.
@@ -68,15 +69,14 @@ fn hidden_runs_match_the_hull() {
         let Some((t0, t1)) = bridge_up(v, w, pair) else {
             continue;
         };
-        let (cp, cq) = (callers(&pp), callers(&qq));
         let ch = chains::<Robust>(
             Ring {
                 pts: v,
-                caller: &cp,
+                caller: Callers::Polygon(&pp),
             },
             Ring {
                 pts: w,
-                caller: &cq,
+                caller: Callers::Polygon(&qq),
             },
             t0,
             t1,
