@@ -97,11 +97,14 @@ fn bridge<K: Kernel>(c: &Part, d: &Part) -> Option<Pair> {
     }
     let (p, q) = (&c.pts[..], &d.pts[..]);
     let mut pair = candidate::<K>(&pc, &pd)?;
-    for _ in 0..=RESEEDS {
-        if certify::<K>(p, q, pair) {
-            return Some(pair);
-        }
+    if certify::<K>(p, q, pair) {
+        return Some(pair);
+    }
+    for _ in 0..RESEEDS {
         let again = canonical::<K>(p, q, search::<K>(p, q, Up::of_pair::<K>(p, q, pair)).0);
+        if certify::<K>(p, q, again) {
+            return Some(again);
+        }
         if again == pair {
             break;
         }
