@@ -53,6 +53,9 @@ std::thread_local! {
 
 /// The [`VertexDistanceCounts`] accumulated on this thread. **Diagnostics only.**
 ///
+/// The case numbers are those of McKenna and Toussaint (1985), §5, as reconstructed in
+/// `docs/algorithms/vertex-distance.md`.
+///
 /// # Complexity
 /// `O(1)`.
 #[must_use]
@@ -61,6 +64,8 @@ pub fn vertex_distance_case_counts() -> VertexDistanceCounts {
 }
 
 /// Sets this thread's [`VertexDistanceCounts`] to zero. **Diagnostics only.**
+///
+/// See [`vertex_distance_case_counts`] (McKenna and Toussaint 1985, §5).
 ///
 /// # Complexity
 /// `O(1)`.
