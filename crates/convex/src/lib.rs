@@ -18,6 +18,9 @@
 //!   (temporal coherence), [`distance_posed`] (rigid poses), [`distance_exact`] (the squared distance as
 //!   an exact rational).
 //! - [`distance_brute`]: the `O(nm)` brute-force twin, for testing and as a baseline.
+//! - [`min_vertex_distance`] / [`min_vertex_distance_with`]: the nearest pair of *vertices*, McKenna and
+//!   Toussaint (1985), `O(m + n)` for disjoint polygons (`O((m + n) log(m + n))` otherwise), with its
+//!   brute-force twin [`min_vertex_distance_brute`].
 //!
 //! # Numbers
 //! Exact predicates, inexact constructions. Every decision is the sign of a polynomial in the input
@@ -58,6 +61,7 @@ mod pair;
 mod pose;
 mod result;
 mod schwartz;
+mod vertex_distance;
 mod within;
 mod yang;
 
@@ -69,5 +73,9 @@ pub use meet::Contact;
 pub use pose::{Pose, distance_posed};
 pub use result::{Closest, SearchStats, Separation, reset_search_stats, search_stats};
 pub use schwartz::{distance_schwartz, distance_schwartz_with};
+pub use vertex_distance::{
+    VertexDistance, VertexDistanceCounts, min_vertex_distance, min_vertex_distance_brute,
+    min_vertex_distance_with, reset_vertex_distance_case_counts, vertex_distance_case_counts,
+};
 pub use within::{Within, distance_within};
 pub use yang::{SCAN_BELOW, distance, distance_to_point, distance_with, distance_yang_with};
