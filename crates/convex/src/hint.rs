@@ -13,7 +13,7 @@ use polydist_polygon::predicates::Kernel;
 use polydist_polygon::{ConvexPolygon, Feature};
 
 use crate::brute::brute_pair;
-use crate::linear::{LINEAR_BELOW, certified_walk};
+use crate::linear::{LINEAR_BELOW, certified_support, certified_walk};
 use crate::meet::{Contact, classify, separation};
 use crate::pair::{Pair, canonical, certify, finish, nearer};
 use crate::result::{Closest, Separation, bump};
@@ -94,8 +94,8 @@ impl Solved {
 }
 
 /// [`distance_with`](crate::distance_with)'s code, also returning the pair: the scan below
-/// [`SCAN_BELOW`]; for two polygons with `n + m <` `LINEAR_BELOW`, the linear walk's certified pair
-/// when it is not `parallel`; else `solve_yang`, shared with `distance_yang_with` (candidate,
+/// [`SCAN_BELOW`]; for two polygons with `n + m <` `LINEAR_BELOW`, the certified pair of the support
+/// guess or else of the linear walk, when it is not `parallel`; else `solve_yang`, shared with `distance_yang_with` (candidate,
 /// certificate, reseeds, contact test, Schwartz, brute force, with the same statistics).
 pub(crate) fn solve<K: Kernel>(pp: &ConvexPolygon, qq: &ConvexPolygon) -> Solved {
     let (n, m) = (pp.len(), qq.len());
@@ -104,7 +104,8 @@ pub(crate) fn solve<K: Kernel>(pp: &ConvexPolygon, qq: &ConvexPolygon) -> Solved
         return Solved::from_meet::<K>(pp, qq, meet, || brute_pair::<K>(pp, qq));
     }
     if n >= 3 && m >= 3 && n + m < LINEAR_BELOW {
-        if let Some(pair) = certified_walk::<K>(pp.vertices(), qq.vertices()) {
+        let (p, q) = (pp.vertices(), qq.vertices());
+        if let Some(pair) = certified_support::<K>(p, q).or_else(|| certified_walk::<K>(p, q)) {
             let closest = finish::<K>(pp, qq, pair);
             if !closest.parallel {
                 bump(|s| s.linear_walks += 1);
