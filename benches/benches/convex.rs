@@ -5,9 +5,10 @@
 //! - W2 (`convex/plus_x`): along `+x`.
 //!
 //! Series, per `n` in 8 … 262,144:
-//! - `polydist_fast`, `polydist_robust`, `polydist_exact`: `distance_with::<K>` (scan below
-//!   `SCAN_BELOW`, else the search);
-//! - `yang_robust`: `distance_yang_with::<Robust>` (the search at every size);
+//! - `polydist_{fast,robust,exact}`: `distance_with::<K>` (the scan below `SCAN_BELOW`, the certified
+//!   support guess and linear walk below `n + m = 64`, else the search);
+//! - `yang_{fast,robust,exact}`: `distance_yang_with::<K>` (Yang's search at every size);
+//! - `schwartz_{fast,robust,exact}`: `distance_schwartz_with::<K>` (Schwartz's `O(log² N)` search);
 //! - `brute_robust`: `distance_brute::<Robust>` (`Θ(nm)`, up to `n = 512`);
 //! - `parry_distance`, `parry_closest_points`: parry2d-f64's `query::distance` / `closest_points`
 //!   (GJK on the polygons' support maps);
@@ -32,7 +33,9 @@ use parry2d_f64::query::{self, ClosestPoints};
 use parry2d_f64::shape::ConvexPolygon as ParryPolygon;
 use polydist_convex::polygon::ConvexPolygon;
 use polydist_convex::polygon::predicates::{Exact, Fast, Kernel, Robust};
-use polydist_convex::{Separation, distance_brute, distance_with, distance_yang_with};
+use polydist_convex::{
+    Separation, distance_brute, distance_schwartz_with, distance_with, distance_yang_with,
+};
 use polydist_oracle::{SplitMix64, random_convex};
 
 /// 8 … 262,144 vertices per polygon.
@@ -182,15 +185,38 @@ fn check(pair: &Pair, n: usize) {
     );
 }
 
-fn polydist_series<K: Kernel>(
+/// One polydist series: `query` on the pair's polygons.
+fn polydist_series(
     group: &mut BenchmarkGroup<'_, WallTime>,
     name: &str,
     n: usize,
     pair: &Pair,
+    query: fn(&ConvexPolygon, &ConvexPolygon) -> Separation,
 ) {
     group.bench_with_input(BenchmarkId::new(name, n), pair, |b, s| {
-        b.iter(|| distance_with::<K>(black_box(&s.p), black_box(&s.q)))
+        b.iter(|| query(black_box(&s.p), black_box(&s.q)))
     });
+}
+
+/// Every polydist series: `distance_with`, the search alone (`distance_yang_with`) and Schwartz's
+/// search (`distance_schwartz_with`), each under the three kernels.
+fn polydist_all(group: &mut BenchmarkGroup<'_, WallTime>, n: usize, pair: &Pair) {
+    fn under<K: Kernel>() -> [fn(&ConvexPolygon, &ConvexPolygon) -> Separation; 3] {
+        [
+            distance_with::<K>,
+            distance_yang_with::<K>,
+            distance_schwartz_with::<K>,
+        ]
+    }
+    for (kernel, queries) in [
+        ("fast", under::<Fast>()),
+        ("robust", under::<Robust>()),
+        ("exact", under::<Exact>()),
+    ] {
+        for (algorithm, query) in ["polydist", "yang", "schwartz"].into_iter().zip(queries) {
+            polydist_series(group, &format!("{algorithm}_{kernel}"), n, pair, query);
+        }
+    }
 }
 
 fn workload(c: &mut Criterion, w: Workload) {
@@ -199,12 +225,7 @@ fn workload(c: &mut Criterion, w: Workload) {
     for n in SIZES {
         let pair = make_pair(n, w);
         check(&pair, n);
-        polydist_series::<Fast>(&mut group, "polydist_fast", n, &pair);
-        polydist_series::<Robust>(&mut group, "polydist_robust", n, &pair);
-        polydist_series::<Exact>(&mut group, "polydist_exact", n, &pair);
-        group.bench_with_input(BenchmarkId::new("yang_robust", n), &pair, |b, s| {
-            b.iter(|| distance_yang_with::<Robust>(black_box(&s.p), black_box(&s.q)))
-        });
+        polydist_all(&mut group, n, &pair);
         if n <= BRUTE_MAX {
             group.bench_with_input(BenchmarkId::new("brute_robust", n), &pair, |b, s| {
                 b.iter(|| distance_brute::<Robust>(black_box(&s.p), black_box(&s.q)))
