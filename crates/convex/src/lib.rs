@@ -11,6 +11,9 @@
 //!   say) and certified by Theorem 1 (Lin–Canny) in `O(1)` exact tests.
 //! - [`distance_to_point`]: a point against a polygon in `O(log n)`.
 //! - [`distance_brute`]: the `O(nm)` brute-force twin, for testing and as a baseline.
+//! - [`hausdorff`], [`directed_hausdorff`], [`cmmr`], [`per_vertex_distances`] (and their `_with`
+//!   and `_brute` forms, [`hausdorff_squared_exact`]): Hausdorff and CMMR distances of filled convex
+//!   polygons in `O(n + m)` (Atallah 1983; Atallah, Ribeiro, Lifschitz 1991), disjoint or not.
 //!
 //! # Numbers
 //! Exact predicates, inexact constructions. Every decision is the sign of a polynomial in the input
@@ -42,6 +45,7 @@ pub use polydist_polygon as polygon;
 mod brute;
 mod construct;
 mod extreme;
+mod hausdorff;
 mod hint;
 mod meet;
 mod pair;
@@ -52,6 +56,12 @@ mod within;
 mod yang;
 
 pub use brute::distance_brute;
+pub use hausdorff::{
+    Cmmr, Direction, Hausdorff, VertexDistance, cmmr, cmmr_brute, cmmr_with, directed_hausdorff,
+    directed_hausdorff_brute, directed_hausdorff_with, hausdorff, hausdorff_brute,
+    hausdorff_squared_exact, hausdorff_with, per_vertex_distances, per_vertex_distances_brute,
+    per_vertex_distances_with, reset_walk_fallbacks, walk_fallbacks,
+};
 pub use hint::{Hint, distance_with_hint};
 pub use pose::{Pose, distance_posed};
 pub use result::{Closest, SearchStats, Separation, reset_search_stats, search_stats};

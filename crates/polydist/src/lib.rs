@@ -41,6 +41,9 @@ pub use polydist_convex as convex;
 pub use polydist_polygon as polygon;
 pub use polydist_predicates as predicates;
 
+pub use polydist_convex::{
+    Cmmr, Hausdorff, VertexDistance, cmmr, directed_hausdorff, hausdorff, per_vertex_distances,
+};
 pub use polydist_polygon::{
     ConvexPolygon, Feature, Location, PolygonError, Segment, SimplePolygon,
 };
