@@ -117,7 +117,7 @@ pub(crate) fn vertex_edge(x: DVec2, a: DVec2, b: DVec2) -> Built {
 }
 
 /// The foot of `x` on the line `ab` (`l = fl(|b − a|²)`), each coordinate within 1 ulp.
-fn foot(x: DVec2, a: DVec2, b: DVec2, l: f64) -> DVec2 {
+pub(crate) fn foot(x: DVec2, a: DVec2, b: DVec2, l: f64) -> DVec2 {
     // First quotient: g = fl(N)/fl(L) with N evaluated exactly (the residual with g = 0 is N).
     let coord = |k: usize| {
         let mut input = [a.x, a.y, b.x, b.y, x.x, x.y, 0.0];

@@ -86,6 +86,13 @@ fn check<K: Kernel>(pv: &[DVec2], qv: &[DVec2]) -> Worst {
             } else {
                 assert_eq!(r.location, Location::Outside, "{r:?} exact {e}");
                 assert!(r.feature.is_some());
+                // The projection realizes the distance (its own bound is 0.5 ulp + 3u·distance).
+                let back = (r.point - r.projection).length();
+                assert!(
+                    (back - r.distance).abs()
+                        <= 1e-12 * r.distance.max(r.point.abs().max_element()),
+                    "{r:?}"
+                );
                 w.vertex_sq = w.vertex_sq.max(ulps_error(r.squared_distance, e));
                 w.vertex = w.vertex.max(ulps_error_sqrt(r.distance, e));
             }

@@ -27,6 +27,7 @@
 //! distance is its square root (within 1 ulp), and CMMR is a compensated sum (within 1.5 ulps).
 
 mod brute;
+mod crossings;
 mod value;
 mod walk;
 
@@ -37,6 +38,9 @@ use polydist_polygon::{ConvexPolygon, Feature, Location};
 use polydist_predicates::{BigRational, Dist2, Exact, Kernel, Robust};
 
 use brute::locate_brute;
+pub use crossings::{
+    BoundaryCrossing, boundary_crossings, boundary_crossings_brute, boundary_crossings_with,
+};
 use value::{Term, compensated_sum, exact_squared, term};
 use walk::{Crossing, Near, walk};
 
@@ -57,7 +61,10 @@ pub struct VertexDistance {
     /// inside `Q`.
     pub feature: Option<Feature>,
     /// The point of filled `Q` nearest to the vertex: the vertex itself when it is in `Q`, a vertex of
-    /// `Q` exactly, or the foot of the perpendicular on an edge (within 1 ulp per coordinate).
+    /// `Q` exactly, or the foot of the perpendicular on an edge: within 1 ulp per coordinate in the
+    /// results of the Hausdorff functions; within `0.5 ulp + 3u·distance` per coordinate (`u = 2⁻⁵³`) in
+    /// the bulk per-vertex lists of [`per_vertex_distances_with`] and [`cmmr_with`], where the
+    /// 1-ulp construction would cost several exact evaluations per vertex.
     pub projection: DVec2,
     /// The squared distance: the exact value rounded once (within `0.5 + 2⁻⁴⁰` ulp).
     pub squared_distance: f64,
@@ -108,7 +115,7 @@ fn features<K: Kernel>(p: &ConvexPolygon, q: &ConvexPolygon, brute: bool) -> Vec
         pv.iter().map(|&v| locate_brute::<K>(qv, v)).collect()
     } else {
         let mut crossings: Vec<Crossing> = Vec::new();
-        walk::<K>(pv, qv, &mut crossings)
+        walk::<K>(pv, qv, &mut crossings, false)
     }
 }
 
@@ -154,16 +161,73 @@ fn dist2(q: &[DVec2], v: DVec2, near: Near) -> Dist2 {
     }
 }
 
-/// The exact argmax of the per-vertex distances (the lowest index among equals).
-fn argmax<K: Kernel>(p: &[DVec2], q: &[DVec2], near: &[Near]) -> usize {
-    let mut best = 0;
-    for k in 1..near.len() {
-        if K::cmp_dist2(dist2(q, p[k], near[k]), dist2(q, p[best], near[best])) == Ordering::Greater
-        {
-            best = k;
+/// An enclosure `[lo, hi]` of the exact squared distance of `v` to its feature, in plain `f64` with a
+/// rigorous error bound (a static filter, as in the Robust kernel's predicates): it only discards
+/// vertices that are certainly not the argmax; the remaining ones are compared exactly.
+fn enclosure(q: &[DVec2], v: DVec2, near: Near) -> (f64, f64) {
+    const U: f64 = f64::EPSILON / 2.0;
+    // Slack for underflow of the products (each loses at most 2^-1074).
+    const TINY: f64 = 1e-300;
+    let (lo, hi) = match near {
+        Near::Inside | Near::OnVertex(_) | Near::OnEdge(_) => (0.0, 0.0),
+        Near::Vertex(i) => {
+            // fl(dx² + dy²) = S(1 + θ), |θ| ≤ 4u + O(u²): every term is positive.
+            let d = v - q[i];
+            let s = d.x * d.x + d.y * d.y;
+            (s * (1.0 - 8.0 * U) - TINY, s * (1.0 + 8.0 * U) + TINY)
         }
+        Near::Edge(i) => {
+            // S = c²/L with c = (b − a) × (v − a), L = |b − a|²: |fl(c) − c| ≤ (3u + O(u²))(|t1| + |t2|),
+            // fl(L) = L(1 + θ) with |θ| ≤ 4u + O(u²); the bounds' own roundings are in the 16u.
+            let (a, b) = (q[i], q[if i + 1 == q.len() { 0 } else { i + 1 }]);
+            let (e, w) = (b - a, v - a);
+            let (t1, t2) = (e.x * w.y, e.y * w.x);
+            let c = (t1 - t2).abs();
+            let err = 8.0 * U * (t1.abs() + t2.abs()) + TINY;
+            let l = e.x * e.x + e.y * e.y;
+            let (cl, ch) = ((c - err).max(0.0), c + err);
+            (
+                (cl * cl / l) * (1.0 - 16.0 * U),
+                (ch * ch / l) * (1.0 + 16.0 * U) + TINY,
+            )
+        }
+    };
+    if lo.is_finite() && hi.is_finite() {
+        (lo.max(0.0), hi)
+    } else {
+        (0.0, f64::INFINITY)
     }
-    best
+}
+
+/// The exact argmax of the per-vertex distances (the lowest index among exact ties): a filter keeps
+/// the vertices whose enclosure reaches the largest lower bound (the argmax is always among them),
+/// then exact comparisons `K::cmp_dist2` decide among those.
+fn argmax<K: Kernel>(p: &[DVec2], q: &[DVec2], near: &[Near]) -> usize {
+    let boxes: Vec<(f64, f64)> = near
+        .iter()
+        .zip(p)
+        .map(|(&f, &v)| enclosure(q, v, f))
+        .collect();
+    let floor = boxes.iter().fold(0.0f64, |m, b| m.max(b.0));
+    let mut best: Option<usize> = None;
+    for (k, b) in boxes.iter().enumerate() {
+        if b.1 < floor {
+            continue; // certainly below the maximum
+        }
+        best = Some(match best {
+            None => k,
+            Some(j) => {
+                if K::cmp_dist2(dist2(q, p[k], near[k]), dist2(q, p[j], near[j]))
+                    == Ordering::Greater
+                {
+                    k
+                } else {
+                    j
+                }
+            }
+        });
+    }
+    best.unwrap_or(0)
 }
 
 /// The directed Hausdorff winner: its internal index and feature.
@@ -175,7 +239,13 @@ fn directed_core<K: Kernel>(p: &ConvexPolygon, q: &ConvexPolygon, brute: bool) -
 
 fn directed_impl<K: Kernel>(p: &ConvexPolygon, q: &ConvexPolygon, brute: bool) -> VertexDistance {
     let (k, near) = directed_core::<K>(p, q, brute);
-    record::<K>(p, q, k, near, term(q.vertices(), p.vertices()[k], near))
+    record::<K>(
+        p,
+        q,
+        k,
+        near,
+        term(q.vertices(), p.vertices()[k], near, true),
+    )
 }
 
 /// Both directions and the larger one.
@@ -198,8 +268,8 @@ fn hausdorff_core<K: Kernel>(
 
 fn hausdorff_impl<K: Kernel>(p: &ConvexPolygon, q: &ConvexPolygon, brute: bool) -> Hausdorff {
     let (direction, (ka, na), (kb, nb)) = hausdorff_core::<K>(p, q, brute);
-    let p_to_q = record::<K>(p, q, ka, na, term(q.vertices(), p.vertices()[ka], na));
-    let q_to_p = record::<K>(q, p, kb, nb, term(p.vertices(), q.vertices()[kb], nb));
+    let p_to_q = record::<K>(p, q, ka, na, term(q.vertices(), p.vertices()[ka], na, true));
+    let q_to_p = record::<K>(q, p, kb, nb, term(p.vertices(), q.vertices()[kb], nb, true));
     let win = match direction {
         Direction::PToQ => &p_to_q,
         Direction::QToP => &q_to_p,
@@ -225,7 +295,7 @@ fn per_vertex_impl<K: Kernel>(
         .iter()
         .enumerate()
         .map(|(k, &f)| {
-            let t = term(qv, pv[k], f);
+            let t = term(qv, pv[k], f, false);
             parts.push((t.hi, t.lo));
             record::<K>(p, q, k, f, t)
         })

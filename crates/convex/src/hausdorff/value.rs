@@ -3,7 +3,7 @@
 //!
 //! - vertex `q`: `hi = fl(|v − q|²)` (the exact polynomial rounded once by [`round_value`]),
 //!   `lo ≈ |v − q|² − hi` (the exact residual, estimated to ~50 bits);
-//! - edge `ab` (foot strictly inside): `g = fl(fl(c²)/fl(L))` with `c = (b − a) × (v − a)` and
+//! - edge `ab` (foot strictly inside): `g = fl(fl(c)²/fl(L))` with `c = (b − a) × (v − a)` and
 //!   `L = |b − a|²` each exact then rounded once, then `lo ≈ (c² − g·L)/L` with the residual
 //!   `c² − g·L` evaluated exactly (a degree-4 polynomial with `g` as an input). So `hi + lo` is the
 //!   exact quotient `c²/L` to about `2⁻¹⁰⁰` relative, and `fl(hi + lo)` is within `0.5 + 2⁻⁴⁰` ulp of it
@@ -53,15 +53,36 @@ impl Polynomial<8> for QuotientResidual {
     }
 }
 
-/// `((b − a) × (v − a))²` (degree 4). Inputs `[ax, ay, bx, by, vx, vy]`.
-struct CrossSquared;
-impl Polynomial<6> for CrossSquared {
-    const DEGREE: u32 = 4;
+/// `(b − a) × (v − a)` (degree 2). Inputs `[ax, ay, bx, by, vx, vy]`.
+struct Cross;
+impl Polynomial<6> for Cross {
+    const DEGREE: u32 = 2;
     fn eval<R: Ring>(&self, x: &[R; 6]) -> R {
         let (ex, ey) = (x[2].sub(&x[0]), x[3].sub(&x[1]));
-        ex.mul(&x[5].sub(&x[1]))
-            .sub(&ey.mul(&x[4].sub(&x[0])))
-            .square()
+        ex.mul(&x[5].sub(&x[1])).sub(&ey.mul(&x[4].sub(&x[0])))
+    }
+}
+
+/// The foot of `v` on the line `ab` as `v − (c/L)·(b − a)^⊥`, with `c = fl((b − a) × (v − a))` and
+/// `L = fl(|b − a|²)` each the exact value rounded once. Per coordinate the correction `k·e_⊥` carries a
+/// relative error below `2.5u + O(u²)` (`c`, `L`, the quotient, the rounded difference `e`, the product)
+/// and the sum one rounding: the result is within `0.5 ulp + 3u·δ` of the exact foot, `δ` the
+/// distance. With `precise`, it is accepted only when that bound is at most 1 ulp, else the accurate
+/// construction (`construct::foot`, within 1 ulp always, several exact evaluations) answers.
+fn foot(v: DVec2, a: DVec2, b: DVec2, c: f64, l: f64, precise: bool) -> DVec2 {
+    const U: f64 = f64::EPSILON / 2.0;
+    let e = b - a;
+    let k = c / l;
+    let (dx, dy) = (k * e.y, -(k * e.x));
+    let f = DVec2::new(v.x + dx, v.y + dy);
+    let ok = |fc: f64, d: f64| {
+        let ulp = fc.abs().next_up() - fc.abs();
+        fc.is_finite() && 3.0 * U * d.abs() <= 0.5 * ulp
+    };
+    if !precise || (ok(f.x, dx) && ok(f.y, dy)) {
+        f
+    } else {
+        construct::foot(v, a, b, l)
     }
 }
 
@@ -88,7 +109,9 @@ fn residual<const N: usize, P: Polynomial<N>>(poly: &P, x: &[f64; N], hi: f64, s
 }
 
 /// The term of vertex `v` with nearest feature `near` on `q`.
-pub(crate) fn term(q: &[DVec2], v: DVec2, near: Near) -> Term {
+/// With `precise`, the projection is within 1 ulp per coordinate (for the few reported winners);
+/// otherwise within `0.5 ulp + 3u·δ` (for bulk per-vertex records), see [`foot`].
+pub(crate) fn term(q: &[DVec2], v: DVec2, near: Near, precise: bool) -> Term {
     let zero = Term {
         hi: 0.0,
         lo: 0.0,
@@ -117,12 +140,13 @@ pub(crate) fn term(q: &[DVec2], v: DVec2, near: Near) -> Term {
         }
         Near::Edge(i) => {
             let (a, b) = (q[i], q[if i + 1 == q.len() { 0 } else { i + 1 }]);
-            let built = construct::vertex_edge(v, a, b);
             let l = round_value(&SqDist, &[a.x, a.y, b.x, b.y]);
-            let c2 = round_value(&CrossSquared, &[a.x, a.y, b.x, b.y, v.x, v.y]);
-            let g = c2 / l;
-            if !(g.is_finite() && c2 >= f64::MIN_POSITIVE && l.is_finite()) {
+            let c = round_value(&Cross, &[a.x, a.y, b.x, b.y, v.x, v.y]);
+            // A first quotient within 2.5u; the exact residual below corrects it.
+            let g = (c * c) / l;
+            if !(g.is_finite() && g >= f64::MIN_POSITIVE && l.is_finite()) {
                 // Out of the range of the corrected quotient: the construction's bounded values.
+                let built = construct::vertex_edge(v, a, b);
                 return Term {
                     hi: built.squared,
                     lo: 0.0,
@@ -140,7 +164,7 @@ pub(crate) fn term(q: &[DVec2], v: DVec2, near: Near) -> Term {
                 lo,
                 squared,
                 distance: squared.sqrt(),
-                projection: built.other,
+                projection: foot(v, a, b, c, l, precise),
             }
         }
     }

@@ -90,10 +90,12 @@ enum State {
     I(usize),
 }
 
-/// The outcome of a local decision: an answer for `b`, or a region to continue from.
+/// The outcome of a local decision: an answer for `b`, a region to continue from, or an entry into
+/// `Q` (the scan start and the feature crossed).
 enum Step {
     Done(Near),
     Go(State),
+    Enter(usize, Near),
 }
 
 /// `Q`'s vertices with cyclic index helpers.
@@ -126,17 +128,22 @@ pub(crate) fn in_vertex_region<K: Kernel>(q: &[DVec2], i: usize, b: DVec2) -> bo
 
 /// The nearest feature of every vertex of `p` on filled `q` (strictly convex, counter-clockwise), and
 /// the symbolic boundary crossings. `O(n + m)` predicates under exact decisions.
+///
+/// With `closing`, the closing segment `[v_{n−1}, v_0]` is walked too, so that `crossings` holds every
+/// crossing of the closed boundary (its answer for `v_0` is dropped).
 pub(crate) fn walk<K: Kernel>(
     p: &[DVec2],
     q: &[DVec2],
     crossings: &mut Vec<Crossing>,
+    closing: bool,
 ) -> Vec<Near> {
-    let mut out = Vec::with_capacity(p.len());
+    let mut out = Vec::with_capacity(p.len() + 1);
     match q.len() {
         0 => {}
         1 | 2 => out.extend(p.iter().map(|&v| small::<K>(q, v))),
-        _ => walk_polygon::<K>(p, q, &mut out, crossings),
+        _ => walk_polygon::<K>(p, q, &mut out, crossings, closing && p.len() >= 2),
     }
+    out.truncate(p.len());
     out
 }
 
@@ -169,15 +176,43 @@ pub(crate) fn small<K: Kernel>(q: &[DVec2], v: DVec2) -> Near {
     }
 }
 
+/// The side of `Q`'s boundary the walk was last on (strictly inside or outside), to record a crossing
+/// only where the side changes: runs along `∂Q` (touching, shared edges) are no crossings.
+struct Sides {
+    /// The current side: `Some(true)` inside, `Some(false)` outside, `None` before any.
+    side: Option<bool>,
+    /// Whether the first recorded crossing was recorded with no side before it.
+    first_unknown: bool,
+}
+
+impl Sides {
+    /// The walk is now on side `inside` after passing `q` on edge `k` of `P`.
+    fn note(&mut self, inside: bool, p_edge: usize, q: Near, crossings: &mut Vec<Crossing>) {
+        if self.side != Some(inside) {
+            if self.side.is_none() && crossings.is_empty() {
+                self.first_unknown = true;
+            }
+            crossings.push(Crossing {
+                p_edge,
+                q,
+                entering: inside,
+            });
+        }
+        self.side = Some(inside);
+    }
+}
+
 /// The walk for `m ≥ 3`.
 fn walk_polygon<K: Kernel>(
     p: &[DVec2],
     q: &[DVec2],
     out: &mut Vec<Near>,
     crossings: &mut Vec<Crossing>,
+    closing: bool,
 ) {
     let r = Ring { q };
     let n = p.len();
+    let segments = if closing { n } else { n.saturating_sub(1) };
     let budget = 10 * (n as u64 + q.len() as u64) + 16;
     let mut run = Run {
         steps: 0,
@@ -189,11 +224,20 @@ fn walk_polygon<K: Kernel>(
         return;
     }
     out.push(locate_brute::<K>(q, p[0]));
+    let mut sides = Sides {
+        side: match out[0] {
+            Near::Inside => Some(true),
+            Near::Vertex(_) | Near::Edge(_) => Some(false),
+            Near::OnVertex(_) | Near::OnEdge(_) => None,
+        },
+        first_unknown: false,
+    };
     // The exit edge of the last segment when it ended strictly inside `Q`.
     let mut exit: Option<usize> = None;
-    for k in 0..n - 1 {
-        let (a, b) = (p[k], p[k + 1]);
-        let step = match out[k] {
+    for k in 0..segments {
+        let (a, b) = (p[k], p[if k + 1 == n { 0 } else { k + 1 }]);
+        let start = out[k];
+        let step = match start {
             Near::Vertex(i) => Step::Go(State::V(i)),
             Near::Edge(i) => Step::Go(State::E(i)),
             Near::Inside => match exit {
@@ -206,6 +250,17 @@ fn walk_polygon<K: Kernel>(
             Near::OnVertex(i) => through_vertex::<K>(&r, i, a, b, &mut run.steps),
             Near::OnEdge(i) => leave_edge::<K>(&r, i, a, b, &mut run.steps),
         };
+        // Leaving a boundary point of Q: to the outside, or into the interior.
+        if matches!(start, Near::OnVertex(_) | Near::OnEdge(_)) {
+            match step {
+                Step::Go(State::V(_) | State::E(_))
+                | Step::Done(Near::Vertex(_) | Near::Edge(_)) => {
+                    sides.note(false, k, start, crossings);
+                }
+                Step::Enter(_, f) => sides.note(true, k, f, crossings),
+                _ => {}
+            }
+        }
         let mut state = match step {
             Step::Done(near) => {
                 exit = None;
@@ -213,16 +268,8 @@ fn walk_polygon<K: Kernel>(
                 continue;
             }
             Step::Go(s) => s,
+            Step::Enter(j, _) => State::I(j),
         };
-        if let State::I(_) = state {
-            if !matches!(out[k], Near::Inside) {
-                crossings.push(Crossing {
-                    p_edge: k,
-                    q: out[k],
-                    entering: true,
-                });
-            }
-        }
         let near = loop {
             run.steps += 1;
             if run.steps > budget {
@@ -230,45 +277,23 @@ fn walk_polygon<K: Kernel>(
             }
             let next = match state {
                 State::V(i) => from_vertex_region::<K>(&r, i, a, b, &mut run.steps),
-                State::E(i) => {
-                    let s = from_edge_region::<K>(&r, i, a, b, &mut run.steps);
-                    if let Step::Go(State::I(_)) = s {
-                        crossings.push(Crossing {
-                            p_edge: k,
-                            q: Near::Edge(i),
-                            entering: true,
-                        });
-                    }
-                    s
-                }
+                State::E(i) => from_edge_region::<K>(&r, i, a, b, &mut run.steps),
                 State::I(j) => {
                     let (s, j) = from_inside::<K>(&r, j, a, b, &mut run.steps, budget);
                     match s {
                         Step::Done(Near::Inside) => exit = Some(j),
-                        Step::Go(_) => crossings.push(Crossing {
-                            p_edge: k,
-                            q: Near::Edge(j),
-                            entering: false,
-                        }),
-                        Step::Done(_) => {}
+                        Step::Go(_) => sides.note(false, k, Near::Edge(j), crossings),
+                        _ => {}
                     }
                     s
                 }
             };
             match next {
                 Step::Done(near) => break Some(near),
-                Step::Go(s) => {
-                    if let (State::V(_) | State::E(_), State::I(_)) = (state, s) {
-                        // Entries recorded above for E; a vertex entry is recorded here.
-                        if let State::V(i) = state {
-                            crossings.push(Crossing {
-                                p_edge: k,
-                                q: Near::Vertex(i),
-                                entering: true,
-                            });
-                        }
-                    }
-                    state = s;
+                Step::Go(s) => state = s,
+                Step::Enter(j, f) => {
+                    sides.note(true, k, f, crossings);
+                    state = State::I(j);
                 }
             }
         };
@@ -283,8 +308,16 @@ fn walk_polygon<K: Kernel>(
                 // Budget exhausted (inconsistent predicates): the brute force answers the rest.
                 run.fell_back = true;
                 FALLBACKS.with(|c| c.set(c.get() + 1));
-                out.extend(p[k + 1..].iter().map(|&v| locate_brute::<K>(q, v)));
+                out.extend(p[(k + 1).min(n)..].iter().map(|&v| locate_brute::<K>(q, v)));
                 break;
+            }
+        }
+    }
+    // Around the closed boundary the side before the first crossing is the side at the end.
+    if closing && sides.first_unknown {
+        if let Some(first) = crossings.first() {
+            if sides.side == Some(first.entering) {
+                crossings.remove(0);
             }
         }
     }
@@ -366,18 +399,18 @@ fn from_edge_region<K: Kernel>(
     // orient(a, b, q_{i+1}) = −μ·cross(d_i, b − a) and cross(d_i, b − a) > 0 for an inward segment.
     if before {
         match K::orient(a, b, qi) {
-            Orientation::CounterClockwise => Step::Go(State::I(i)),
+            Orientation::CounterClockwise => Step::Enter(i, Near::Edge(i)),
             Orientation::Collinear => through_vertex::<K>(r, i, a, b, steps),
             Orientation::Clockwise => Step::Go(State::V(i)),
         }
     } else if after {
         match K::orient(a, b, qj) {
-            Orientation::Clockwise => Step::Go(State::I(i)),
+            Orientation::Clockwise => Step::Enter(i, Near::Edge(i)),
             Orientation::Collinear => through_vertex::<K>(r, j, a, b, steps),
             Orientation::CounterClockwise => Step::Go(State::V(j)),
         }
     } else {
-        Step::Go(State::I(i))
+        Step::Enter(i, Near::Edge(i))
     }
 }
 
@@ -443,7 +476,7 @@ fn through_vertex<K: Kernel>(
         if l1 == Orientation::CounterClockwise && l0 == Orientation::CounterClockwise {
             // Into the interior at q_i: the scan for the exit starts at edge i (q_{i+1} is strictly
             // right of the line).
-            return Step::Go(State::I(i));
+            return Step::Enter(i, Near::Vertex(i));
         }
         let fwd = K::dot_sign(qi, b, qi, qn); // (b − q_i)·d_i
         if l1 == Orientation::Collinear && fwd == Sign::Positive {
@@ -481,7 +514,7 @@ fn leave_edge<K: Kernel>(r: &Ring<'_>, i: usize, a: DVec2, b: DVec2, steps: &mut
     let (qi, qj) = (r.at(i), r.at(j));
     match K::orient(qi, qj, b) {
         // Inward: the scan starts at edge i (q_{i+1} is strictly right of the line).
-        Orientation::CounterClockwise => Step::Go(State::I(i)),
+        Orientation::CounterClockwise => Step::Enter(i, Near::Edge(i)),
         Orientation::Clockwise => Step::Go(State::E(i)),
         Orientation::Collinear => {
             let bf = K::dot_sign(qi, b, qi, qj);
