@@ -536,3 +536,93 @@ fn brute_force_is_quadratic_by_count() {
     assert!(walk < 20 * 800, "{walk}");
     assert_eq!(walk.cmp(&brute), Ordering::Less);
 }
+
+std::thread_local! {
+    static CHAOS: core::cell::Cell<u64> = const { core::cell::Cell::new(0x9e37_79b9_7f4a_7c15) };
+}
+
+/// A kernel whose every sign is pseudo-random: the walk must still terminate (its step budget) and
+/// never panic, whatever the predicates say.
+#[derive(Clone, Copy, Debug, Default)]
+struct Chaos;
+
+impl Kernel for Chaos {
+    const NAME: &'static str = "chaos";
+    const EXACT_DECISIONS: bool = false;
+    fn sign<const N: usize, P: polydist_convex::polygon::predicates::Polynomial<N> + ?Sized>(
+        _: &P,
+        _: &[f64; N],
+    ) -> polydist_convex::polygon::predicates::Sign {
+        use polydist_convex::polygon::predicates::Sign;
+        CHAOS.with(|c| {
+            let mut z = c.get().wrapping_add(0x9e37_79b9_7f4a_7c15);
+            c.set(z);
+            z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+            z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+            match (z ^ (z >> 31)) % 3 {
+                0 => Sign::Negative,
+                1 => Sign::Zero,
+                _ => Sign::Positive,
+            }
+        })
+    }
+}
+
+#[test]
+fn random_signs_terminate_without_panic() {
+    let mut rng = SplitMix64::new(23);
+    reset_walk_fallbacks();
+    let mut runs = 0;
+    for round in 0..60 {
+        let n = 3 + round % 50;
+        let (p, q) = overlapping(&mut rng, n, n + 3);
+        let (p, q) = (
+            ConvexPolygon::try_new(&p).unwrap_or_else(|e| panic!("{e}")),
+            ConvexPolygon::try_new(&q).unwrap_or_else(|e| panic!("{e}")),
+        );
+        let h = hausdorff_with::<Chaos>(&p, &q);
+        let c = cmmr_with::<Chaos>(&p, &q);
+        let x = polydist_convex::boundary_crossings_with::<Chaos>(&p, &q);
+        assert_eq!(c.p_to_q.len(), p.len());
+        assert_eq!(c.q_to_p.len(), q.len());
+        assert!(h.distance >= 0.0 && x.len() <= 12 * (p.len() + q.len()) + 32);
+        runs += 4;
+    }
+    println!(
+        "chaos: {runs} walks, {} ran out of budget",
+        walk_fallbacks()
+    );
+}
+
+/// A kernel that answers "negative" to everything: no region test ever passes and the walk cycles
+/// between regions until its step budget runs out; the brute force must then answer, in finite time.
+#[derive(Clone, Copy, Debug, Default)]
+struct AlwaysNegative;
+
+impl Kernel for AlwaysNegative {
+    const NAME: &'static str = "always-negative";
+    const EXACT_DECISIONS: bool = false;
+    fn sign<const N: usize, P: polydist_convex::polygon::predicates::Polynomial<N> + ?Sized>(
+        _: &P,
+        _: &[f64; N],
+    ) -> polydist_convex::polygon::predicates::Sign {
+        polydist_convex::polygon::predicates::Sign::Negative
+    }
+}
+
+#[test]
+fn exhausted_budget_falls_back_to_the_brute_force() {
+    let mut rng = SplitMix64::new(29);
+    reset_walk_fallbacks();
+    for n in [3, 10, 100] {
+        let (p, q) = overlapping(&mut rng, n, n + 5);
+        let (p, q) = (
+            ConvexPolygon::try_new(&p).unwrap_or_else(|e| panic!("{e}")),
+            ConvexPolygon::try_new(&q).unwrap_or_else(|e| panic!("{e}")),
+        );
+        let c = cmmr_with::<AlwaysNegative>(&p, &q);
+        assert_eq!((c.p_to_q.len(), c.q_to_p.len()), (p.len(), q.len()));
+        let _ = hausdorff_with::<AlwaysNegative>(&p, &q);
+    }
+    assert!(walk_fallbacks() > 0, "the budget never ran out");
+}

@@ -62,7 +62,7 @@ pub struct VertexDistance {
     pub feature: Option<Feature>,
     /// The point of filled `Q` nearest to the vertex: the vertex itself when it is in `Q`, a vertex of
     /// `Q` exactly, or the foot of the perpendicular on an edge: within 1 ulp per coordinate in the
-    /// results of the Hausdorff functions; within `0.5 ulp + 3u·distance` per coordinate (`u = 2⁻⁵³`) in
+    /// results of the Hausdorff functions; within `0.5 ulp + 16u·distance` per coordinate (`u = 2⁻⁵³`) in
     /// the bulk per-vertex lists of [`per_vertex_distances_with`] and [`cmmr_with`], where the
     /// 1-ulp construction would cost several exact evaluations per vertex.
     pub projection: DVec2,

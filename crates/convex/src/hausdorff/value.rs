@@ -1,13 +1,17 @@
 //! The numbers: each per-vertex squared distance from its exact feature, as an unevaluated sum
 //! `hi + lo` of two doubles (the exact value to about 100 bits), and their compensated sum.
 //!
-//! - vertex `q`: `hi = fl(|v − q|²)` (the exact polynomial rounded once by [`round_value`]),
-//!   `lo ≈ |v − q|² − hi` (the exact residual, estimated to ~50 bits);
-//! - edge `ab` (foot strictly inside): `g = fl(fl(c)²/fl(L))` with `c = (b − a) × (v − a)` and
-//!   `L = |b − a|²` each exact then rounded once, then `lo ≈ (c² − g·L)/L` with the residual
-//!   `c² − g·L` evaluated exactly (a degree-4 polynomial with `g` as an input). So `hi + lo` is the
-//!   exact quotient `c²/L` to about `2⁻¹⁰⁰` relative, and `fl(hi + lo)` is within `0.5 + 2⁻⁴⁰` ulp of it
-//!   (the exact value rounded once, up to the last bit).
+//! - vertex `q`: a first value `hi` (plain `fl(dx² + dy²)`, within `4u`; exactly rounded by
+//!   [`round_value`] near underflow), then `lo ≈ |v − q|² − hi`, the exact residual estimated in
+//!   double-double with a rigorous bound (evaluated exactly when the bound is too wide);
+//! - edge `ab` (foot strictly inside): `g = fl(c²/L)` from `c = (b − a) × (v − a)` and `L = |b − a|²`
+//!   (plain `f64` when the enclosure shows no cancellation, within `7u` and `4u`; else each exact and
+//!   rounded once), then `lo ≈ (c² − g·L)/L` with the residual `c² − g·L` evaluated exactly (a degree-4
+//!   polynomial with `g` as an input).
+//!
+//! Either way `hi + lo` is the exact value to about `2⁻¹⁰⁰` relative (the first value only has to be
+//! close; the residual carries the rest), and `fl(hi + lo)` is within `0.5 + 2⁻⁴⁰` ulp of it: the exact
+//! value rounded once, up to the last bit.
 //!
 //! The CMMR sum adds all `hi` and `lo` parts with Neumaier's compensated summation: the terms are
 //! nonnegative (`lo` is a tiny correction), so the result is within `u·S + O(n·u²)·S` of the exact sum
@@ -63,12 +67,12 @@ impl Polynomial<6> for Cross {
     }
 }
 
-/// The foot of `v` on the line `ab` as `v − (c/L)·(b − a)^⊥`, with `c = fl((b − a) × (v − a))` and
-/// `L = fl(|b − a|²)` each the exact value rounded once. Per coordinate the correction `k·e_⊥` carries a
-/// relative error below `2.5u + O(u²)` (`c`, `L`, the quotient, the rounded difference `e`, the product)
-/// and the sum one rounding: the result is within `0.5 ulp + 3u·δ` of the exact foot, `δ` the
-/// distance. With `precise`, it is accepted only when that bound is at most 1 ulp, else the accurate
-/// construction (`construct::foot`, within 1 ulp always, several exact evaluations) answers.
+/// The foot of `v` on the line `ab` as `v − (c/L)·(b − a)^⊥`, with `c ≈ (b − a) × (v − a)` within 7u
+/// and `L ≈ |b − a|²` within 4u (see [`term`]). Per coordinate the correction `k·e_⊥` carries a relative
+/// error below `14u + O(u²)` (`c`, `L`, the quotient, the rounded difference `e`, the product) and the
+/// sum one rounding: the result is within `0.5 ulp + 16u·δ` of the exact foot, `δ` the distance. With
+/// `precise`, it is accepted only when that bound is at most 1 ulp, else the accurate construction
+/// (`construct::foot`, within 1 ulp always, several exact evaluations) answers.
 fn foot(v: DVec2, a: DVec2, b: DVec2, c: f64, l: f64, precise: bool) -> DVec2 {
     const U: f64 = f64::EPSILON / 2.0;
     let e = b - a;
@@ -77,7 +81,7 @@ fn foot(v: DVec2, a: DVec2, b: DVec2, c: f64, l: f64, precise: bool) -> DVec2 {
     let f = DVec2::new(v.x + dx, v.y + dy);
     let ok = |fc: f64, d: f64| {
         let ulp = fc.abs().next_up() - fc.abs();
-        fc.is_finite() && 3.0 * U * d.abs() <= 0.5 * ulp
+        fc.is_finite() && 16.0 * U * d.abs() <= 0.5 * ulp
     };
     if !precise || (ok(f.x, dx) && ok(f.y, dy)) {
         f
@@ -85,6 +89,9 @@ fn foot(v: DVec2, a: DVec2, b: DVec2, c: f64, l: f64, precise: bool) -> DVec2 {
         construct::foot(v, a, b, l)
     }
 }
+
+/// Plain first values below this are recomputed exactly-rounded (far from underflow).
+const NORMAL_ENOUGH: f64 = 1e-280;
 
 /// The value of one vertex: squared distance as `hi + lo`, the distance, the nearest point.
 #[derive(Clone, Copy, Debug)]
@@ -110,7 +117,7 @@ fn residual<const N: usize, P: Polynomial<N>>(poly: &P, x: &[f64; N], hi: f64, s
 
 /// The term of vertex `v` with nearest feature `near` on `q`.
 /// With `precise`, the projection is within 1 ulp per coordinate (for the few reported winners);
-/// otherwise within `0.5 ulp + 3u·δ` (for bulk per-vertex records), see [`foot`].
+/// otherwise within `0.5 ulp + 16u·δ` (for bulk per-vertex records), see [`foot`].
 pub(crate) fn term(q: &[DVec2], v: DVec2, near: Near, precise: bool) -> Term {
     let zero = Term {
         hi: 0.0,
@@ -123,7 +130,15 @@ pub(crate) fn term(q: &[DVec2], v: DVec2, near: Near, precise: bool) -> Term {
         Near::Inside | Near::OnVertex(_) | Near::OnEdge(_) => zero,
         Near::Vertex(i) => {
             let c = q[i];
-            let hi = round_value(&SqDist, &[v.x, v.y, c.x, c.y]);
+            // A first value in plain f64 (within 4u: every term is positive), else rounded once; the
+            // exact residual below corrects either to about 2^-100.
+            let d = v - c;
+            let plain = d.x * d.x + d.y * d.y;
+            let hi = if plain.is_finite() && plain >= NORMAL_ENOUGH {
+                plain
+            } else {
+                round_value(&SqDist, &[v.x, v.y, c.x, c.y])
+            };
             let lo = if hi.is_finite() && hi > 0.0 {
                 residual(&SqDistResidual, &[v.x, v.y, c.x, c.y, hi, 1.0], hi, 1.0)
             } else {
@@ -140,9 +155,26 @@ pub(crate) fn term(q: &[DVec2], v: DVec2, near: Near, precise: bool) -> Term {
         }
         Near::Edge(i) => {
             let (a, b) = (q[i], q[if i + 1 == q.len() { 0 } else { i + 1 }]);
-            let l = round_value(&SqDist, &[a.x, a.y, b.x, b.y]);
-            let c = round_value(&Cross, &[a.x, a.y, b.x, b.y, v.x, v.y]);
-            // A first quotient within 2.5u; the exact residual below corrects it.
+            // c = (b − a) × (v − a) and L = |b − a|²: in plain f64 when there is no cancellation
+            // (|fl(c) − c| ≤ 3u(|t1| + |t2|) + u|fl(c)| ≤ 7u|fl(c)| when |t1| + |t2| ≤ 2|fl(c)|;
+            // fl(L) within 4u), else each exact and rounded once. A first quotient within 20u; the
+            // exact residual below corrects it.
+            let (e, w) = (b - a, v - a);
+            let (t1, t2) = (e.x * w.y, e.y * w.x);
+            let (c0, l0) = (t1 - t2, e.x * e.x + e.y * e.y);
+            let cheap = t1.abs() + t2.abs() <= 2.0 * c0.abs()
+                && c0.abs() >= NORMAL_ENOUGH
+                && l0.is_finite()
+                && l0 >= NORMAL_ENOUGH
+                && (c0 * c0).is_finite();
+            let (c, l) = if cheap {
+                (c0, l0)
+            } else {
+                (
+                    round_value(&Cross, &[a.x, a.y, b.x, b.y, v.x, v.y]),
+                    round_value(&SqDist, &[a.x, a.y, b.x, b.y]),
+                )
+            };
             let g = (c * c) / l;
             if !(g.is_finite() && g >= f64::MIN_POSITIVE && l.is_finite()) {
                 // Out of the range of the corrected quotient: the construction's bounded values.

@@ -223,7 +223,7 @@ fn walk_polygon<K: Kernel>(
         LAST.with(|c| c.set(run));
         return;
     }
-    out.push(locate_brute::<K>(q, p[0]));
+    out.push(locate_first::<K>(&r, p[0]));
     let mut sides = Sides {
         side: match out[0] {
             Near::Inside => Some(true),
@@ -322,6 +322,44 @@ fn walk_polygon<K: Kernel>(
         }
     }
     LAST.with(|c| c.set(run));
+}
+
+/// The nearest feature of the first vertex: in `Q` iff on or left of every edge line, else the outer
+/// region whose certified test passes (`O(m)` cheap signs); the brute force if none does (possible
+/// only with inconsistent signs).
+fn locate_first<K: Kernel>(r: &Ring<'_>, v: DVec2) -> Near {
+    let m = r.q.len();
+    let mut outside = false;
+    let mut on = None;
+    for i in 0..m {
+        match K::orient(r.at(i), r.at(r.nx(i)), v) {
+            Orientation::Clockwise => {
+                outside = true;
+                break;
+            }
+            Orientation::Collinear => on = on.or(Some(i)),
+            Orientation::CounterClockwise => {}
+        }
+    }
+    if !outside {
+        return match on {
+            None => Near::Inside,
+            Some(_) => locate_brute::<K>(r.q, v),
+        };
+    }
+    for i in 0..m {
+        if in_vertex_region::<K>(r.q, i, v) {
+            return Near::Vertex(i);
+        }
+        let (qi, qj) = (r.at(i), r.at(r.nx(i)));
+        if K::dot_sign(qi, v, qi, qj) == Sign::Positive
+            && K::dot_sign(qj, v, qi, qj) == Sign::Negative
+            && K::orient(qi, qj, v) == Orientation::Clockwise
+        {
+            return Near::Edge(i);
+        }
+    }
+    locate_brute::<K>(r.q, v)
 }
 
 /// The exit edge of the line `a → b` through `a` strictly inside `Q`, by one `O(m)` scan: the edge
