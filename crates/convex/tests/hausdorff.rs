@@ -518,6 +518,68 @@ fn linear_growth_by_counting_predicates() {
     }
 }
 
+/// A regular `n`-gon of radius `r`, rotated by `phase` (float vertices; strictly convex for these `n`).
+fn regular(n: usize, r: f64, phase: f64) -> ConvexPolygon {
+    let v: Vec<DVec2> = (0..n)
+        .map(|i| {
+            let t = phase + core::f64::consts::TAU * i as f64 / n as f64;
+            DVec2::new(r * t.cos(), r * t.sin())
+        })
+        .collect();
+    ConvexPolygon::try_new(&v).unwrap_or_else(|e| panic!("{e}"))
+}
+
+#[test]
+fn linear_growth_on_adversarial_families() {
+    // Two regular n-gons, one rotated by half a step: 2n crossings, n pieces of one vertex each; and a
+    // thin sliver inside a large polygon (the walk of the large one circles the sliver).
+    for (name, make) in [
+        (
+            "rotated n-gons",
+            (|n| {
+                (
+                    regular(n, 1.0, 0.0),
+                    regular(n, 1.0, core::f64::consts::PI / n as f64),
+                )
+            }) as fn(usize) -> (ConvexPolygon, ConvexPolygon),
+        ),
+        ("sliver inside", |n| {
+            let mut rng = SplitMix64::new(n as u64);
+            let s = sliver(&mut rng, n, 2f64.powi(20));
+            (
+                regular(n, 1e6, 0.1),
+                ConvexPolygon::try_new(&s).unwrap_or_else(|e| panic!("{e}")),
+            )
+        }),
+    ] {
+        let mut per = Vec::new();
+        for n in [100usize, 1_000, 10_000] {
+            let (p, q) = make(n);
+            if name == "rotated n-gons" {
+                assert_eq!(polydist_convex::boundary_crossings(&p, &q).len(), 2 * n);
+            }
+            reset_predicate_counts();
+            reset_walk_fallbacks();
+            let _ = hausdorff_with::<Counted<Robust>>(&p, &q);
+            let _ = cmmr_with::<Counted<Robust>>(&p, &q);
+            assert_eq!(walk_fallbacks(), 0);
+            per.push((
+                n,
+                predicate_counts().total() as f64 / (p.len() + q.len()) as f64,
+            ));
+        }
+        println!("{name}: predicate calls per vertex {per:?}");
+        for &(n, c) in &per {
+            assert!(c <= 60.0, "{name}, n = {n}: {c} calls per vertex");
+            assert!(
+                c <= 1.5 * per[0].1 + 10.0,
+                "{name}, n = {n}: {c} against {}",
+                per[0].1
+            );
+        }
+    }
+}
+
 #[test]
 fn brute_force_is_quadratic_by_count() {
     // The twin really is the O(nm) baseline (and the walk is not).

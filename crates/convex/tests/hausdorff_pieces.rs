@@ -145,6 +145,25 @@ fn many_pieces() {
         let y = boundary_crossings_with::<Robust>(&q, &p);
         check_theorem_1(&q, &p, &y);
     }
+    // Regular n-gons rotated by half a step: 2n crossings, n pieces of one vertex each.
+    for n in [5usize, 16, 50] {
+        let ring = |phase: f64| -> Vec<DVec2> {
+            (0..n)
+                .map(|i| {
+                    let t = phase + core::f64::consts::TAU * i as f64 / n as f64;
+                    DVec2::new(t.cos(), t.sin())
+                })
+                .collect()
+        };
+        let (p, q) = (
+            polygon(&ring(0.0)),
+            polygon(&ring(core::f64::consts::PI / n as f64)),
+        );
+        let x = boundary_crossings_with::<Robust>(&p, &q);
+        assert_eq!(x, boundary_crossings_brute::<Robust>(&p, &q));
+        assert_eq!(check_theorem_1(&p, &q, &x), n);
+        most = most.max(n);
+    }
     println!("most pieces: {most}");
     assert!(
         most >= 4,
