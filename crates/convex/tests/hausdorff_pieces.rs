@@ -201,3 +201,47 @@ fn degenerate_contacts_keep_crossings_paired() {
         check_theorem_1(&p, &q, &x);
     }
 }
+
+#[test]
+fn crossings_of_fixed_degenerate_pairs() {
+    let sq = |x0: f64, y0: f64, s: f64| {
+        polygon(&[
+            DVec2::new(x0, y0),
+            DVec2::new(x0 + s, y0),
+            DVec2::new(x0 + s, y0 + s),
+            DVec2::new(x0, y0 + s),
+        ])
+    };
+    let poly =
+        |v: &[(f64, f64)]| polygon(&v.iter().map(|&(x, y)| DVec2::new(x, y)).collect::<Vec<_>>());
+    let big = sq(0.0, 0.0, 8.0);
+    let inscribed = poly(&[(4.0, 0.0), (8.0, 4.0), (4.0, 8.0), (0.0, 4.0)]);
+    let through = poly(&[(4.0, -2.0), (10.0, 4.0), (4.0, 10.0), (-2.0, 4.0)]);
+    let none: Vec<BoundaryCrossing> = Vec::new();
+    // Touching contacts and shared boundary are no crossings.
+    for (p, q, what) in [
+        (&big, &big, "identical"),
+        (&big, &inscribed, "inscribed: touching at four points"),
+        (&inscribed, &big, "inscribed, other order"),
+        (&big, &sq(0.0, 0.0, 3.0), "nested in a corner"),
+        (&sq(0.0, 0.0, 3.0), &big, "nested in a corner, other order"),
+        (&big, &sq(8.0, 0.0, 8.0), "sharing an edge outside"),
+        (&big, &sq(8.0, 8.0, 2.0), "touching at a vertex"),
+    ] {
+        assert_eq!(boundary_crossings_with::<Robust>(p, q), none, "{what}");
+        assert_eq!(boundary_crossings_with::<Exact>(p, q), none, "{what}");
+    }
+    // Proper crossings, both orders: eight for the diamond through the square's sides.
+    for (p, q) in [(&big, &through), (&through, &big)] {
+        let x = boundary_crossings_with::<Robust>(p, q);
+        assert_eq!(x.len(), 8);
+        assert_eq!(x, boundary_crossings_brute::<Robust>(p, q));
+        check_theorem_1(p, q, &x);
+    }
+    // Overlapping corners with collinear edges: the boundary enters at a vertex of Q on an edge of P
+    // and leaves at another; one piece each way.
+    let corner = sq(4.0, 4.0, 8.0);
+    let x = boundary_crossings_with::<Robust>(&big, &corner);
+    assert_eq!(x.len(), 2, "{x:?}");
+    assert!(x[0].entering != x[1].entering);
+}
