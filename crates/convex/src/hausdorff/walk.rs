@@ -11,9 +11,12 @@
 //!   at a foot (`sign(d_i·(v_{k+1} − v_k))`); no projection is ever constructed;
 //! - on intersecting polygons the same walk passes through `Q`'s interior: it enters through an edge and
 //!   leaves through the exit edge of the line `v_k v_{k+1}`, found by a forward scan (the scan index is
-//!   kept from one segment to the next). The entries and exits are the boundary crossings of the
-//!   intersection `P ∩ Q`, reported symbolically as (edge of `P`, edge of `Q`) pairs: they delimit the
-//!   pieces of `(P ∪ Q) − int(P ∩ Q)` (ARL §4).
+//!   kept from one segment to the next). Where the walk changes side (strictly inside ↔ outside) it
+//!   records a boundary crossing of `∂P` with `∂Q`, symbolically as (edge of `P`, feature of `Q`):
+//!   these delimit the pieces of `(P ∪ Q) − int(P ∩ Q)` (ARL §4); touching and shared boundary
+//!   stretches are no crossings;
+//! - a segment that starts on `∂Q` or passes exactly through a vertex of `Q` is relocated by `O(1)`
+//!   local signs at that vertex or edge (following the boundary along a collinear edge).
 //!
 //! Every stop at an outer region is certified by the exact region test, so a stop can never be at a
 //! wrong feature; a global step budget of `10(n + m) + 16` (never reached under exact predicates, see
@@ -247,8 +250,8 @@ fn walk_polygon<K: Kernel>(
                     None => Step::Done(locate_brute::<K>(q, b)),
                 },
             },
-            Near::OnVertex(i) => through_vertex::<K>(&r, i, a, b, &mut run.steps),
-            Near::OnEdge(i) => leave_edge::<K>(&r, i, a, b, &mut run.steps),
+            Near::OnVertex(i) => through_vertex::<K>(&r, i, b, &mut run.steps),
+            Near::OnEdge(i) => leave_edge::<K>(&r, i, b, &mut run.steps),
         };
         // Leaving a boundary point of Q: to the outside, or into the interior.
         if matches!(start, Near::OnVertex(_) | Near::OnEdge(_)) {
@@ -393,7 +396,7 @@ fn from_vertex_region<K: Kernel>(
         Orientation::Clockwise => Step::Go(State::E(r.pv(i))),
         // The line through the current point (in V(i)) and b passes through q_i; b is not in the cone
         // V(i), so it lies beyond q_i.
-        Orientation::Collinear => through_vertex::<K>(r, i, a, b, steps),
+        Orientation::Collinear => through_vertex::<K>(r, i, b, steps),
     }
 }
 
@@ -438,13 +441,13 @@ fn from_edge_region<K: Kernel>(
     if before {
         match K::orient(a, b, qi) {
             Orientation::CounterClockwise => Step::Enter(i, Near::Edge(i)),
-            Orientation::Collinear => through_vertex::<K>(r, i, a, b, steps),
+            Orientation::Collinear => through_vertex::<K>(r, i, b, steps),
             Orientation::Clockwise => Step::Go(State::V(i)),
         }
     } else if after {
         match K::orient(a, b, qj) {
             Orientation::Clockwise => Step::Enter(i, Near::Edge(i)),
-            Orientation::Collinear => through_vertex::<K>(r, j, a, b, steps),
+            Orientation::Collinear => through_vertex::<K>(r, j, b, steps),
             Orientation::CounterClockwise => Step::Go(State::V(j)),
         }
     } else {
@@ -492,13 +495,7 @@ fn from_inside<K: Kernel>(
 
 /// The segment passes through (or starts at) vertex `q_i` heading for `b`: decide locally from the
 /// two edges at `q_i`, following the boundary when the segment runs along an edge.
-fn through_vertex<K: Kernel>(
-    r: &Ring<'_>,
-    mut i: usize,
-    _a: DVec2,
-    b: DVec2,
-    steps: &mut u64,
-) -> Step {
+fn through_vertex<K: Kernel>(r: &Ring<'_>, mut i: usize, b: DVec2, steps: &mut u64) -> Step {
     let m = r.q.len();
     for _ in 0..m {
         *steps += 1;
@@ -546,8 +543,8 @@ fn through_vertex<K: Kernel>(
     Step::Go(State::E(i))
 }
 
-/// The segment starts at `a` on the open edge `e_i`.
-fn leave_edge<K: Kernel>(r: &Ring<'_>, i: usize, a: DVec2, b: DVec2, steps: &mut u64) -> Step {
+/// The segment starts on the open edge `e_i` and heads for `b`.
+fn leave_edge<K: Kernel>(r: &Ring<'_>, i: usize, b: DVec2, steps: &mut u64) -> Step {
     let j = r.nx(i);
     let (qi, qj) = (r.at(i), r.at(j));
     match K::orient(qi, qj, b) {
@@ -564,9 +561,9 @@ fn leave_edge<K: Kernel>(r: &Ring<'_>, i: usize, a: DVec2, b: DVec2, steps: &mut
             } else if bf == Sign::Positive && af == Sign::Negative {
                 Step::Done(Near::OnEdge(i))
             } else if af == Sign::Positive {
-                through_vertex::<K>(r, j, a, b, steps)
+                through_vertex::<K>(r, j, b, steps)
             } else {
-                through_vertex::<K>(r, i, a, b, steps)
+                through_vertex::<K>(r, i, b, steps)
             }
         }
     }
