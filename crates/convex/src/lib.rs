@@ -13,7 +13,9 @@
 //! - [`distance_brute`]: the `O(nm)` brute-force twin, for testing and as a baseline.
 //! - [`hausdorff`], [`directed_hausdorff`], [`cmmr`], [`per_vertex_distances`] (and their `_with`
 //!   and `_brute` forms, [`hausdorff_squared_exact`]): Hausdorff and CMMR distances of filled convex
-//!   polygons in `O(n + m)` (Atallah 1983; Atallah, Ribeiro, Lifschitz 1991), disjoint or not.
+//!   polygons in `O(n + m)` (Atallah 1983; Atallah, Ribeiro, Lifschitz 1991), disjoint or not, and
+//!   [`boundary_crossings`]: where `∂P` enters and leaves `Q`, kept symbolic (the intersection structure
+//!   behind their piece decomposition).
 //!
 //! # Numbers
 //! Exact predicates, inexact constructions. Every decision is the sign of a polynomial in the input
