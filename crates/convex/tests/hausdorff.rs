@@ -688,3 +688,82 @@ fn exhausted_budget_falls_back_to_the_brute_force() {
     }
     assert!(walk_fallbacks() > 0, "the budget never ran out");
 }
+
+/// The exact nearest point of the boundary of `q` (strictly convex, CCW, ≥ 3 vertices) to `v` outside
+/// it, as rationals `(x, y, squared distance)`: every edge, the foot clamped to it, the nearest kept.
+fn exact_projection(v: DVec2, q: &[DVec2]) -> (BigRational, BigRational, BigRational) {
+    use polydist_convex::polygon::predicates::exact::to_rational;
+    let r = |x: f64| to_rational(x).unwrap_or_else(zero);
+    let (vx, vy) = (r(v.x), r(v.y));
+    let mut best: Option<(BigRational, BigRational, BigRational)> = None;
+    for i in 0..q.len() {
+        let (a, b) = (q[i], q[(i + 1) % q.len()]);
+        let (ax, ay) = (r(a.x), r(a.y));
+        let (ex, ey) = (r(b.x) - &ax, r(b.y) - &ay);
+        let l = &ex * &ex + &ey * &ey;
+        let mut t = ((&vx - &ax) * &ex + (&vy - &ay) * &ey) / &l;
+        if t < zero() {
+            t = zero();
+        }
+        let one = BigRational::from_integer(1.into());
+        if t > one {
+            t = one;
+        }
+        let (fx, fy) = (&ax + &t * &ex, &ay + &t * &ey);
+        let d2 = (&vx - &fx) * (&vx - &fx) + (&vy - &fy) * (&vy - &fy);
+        if best.as_ref().is_none_or(|b| d2 < b.2) {
+            best = Some((fx, fy, d2));
+        }
+    }
+    best.unwrap_or_else(|| (zero(), zero(), zero()))
+}
+
+#[test]
+fn projections_within_their_bounds() {
+    // Bulk lists: within 0.5 ulp + 16u·δ per coordinate; Hausdorff winners: within 1 ulp.
+    const U: f64 = f64::EPSILON / 2.0;
+    let mut rng = SplitMix64::new(31);
+    let (mut worst_bulk, mut worst_winner) = (0.0f64, 0.0f64);
+    for round in 0..6 {
+        let n = 5 + 7 * round;
+        let mut pairs = relation_pairs(&mut rng, n, n + 3);
+        pairs.push(overlapping(&mut rng, n, n + 1));
+        for (p, q) in pairs {
+            let (Ok(p), Ok(q)) = (ConvexPolygon::try_new(&p), ConvexPolygon::try_new(&q)) else {
+                continue;
+            };
+            if q.len() < 3 {
+                continue;
+            }
+            for r in per_vertex_distances_with::<Robust>(&p, &q) {
+                if r.location != Location::Outside {
+                    continue;
+                }
+                let (fx, fy, _) = exact_projection(r.point, q.vertices());
+                for (c, e) in [(r.projection.x, &fx), (r.projection.y, &fy)] {
+                    let ulp = {
+                        let a = polydist_oracle::to_f64_nearest(e).abs();
+                        a.next_up() - a
+                    };
+                    let err = ulps_error(c, e);
+                    let allowed = 0.5 + 16.0 * U * r.distance / ulp + 1e-9;
+                    assert!(
+                        err <= allowed.max(1.0),
+                        "{r:?}: {err} ulps, allowed {allowed}"
+                    );
+                    worst_bulk = worst_bulk.max(err);
+                }
+            }
+            let h = directed_hausdorff_with::<Robust>(&p, &q);
+            if h.location == Location::Outside {
+                let (fx, fy, _) = exact_projection(h.point, q.vertices());
+                for (c, e) in [(h.projection.x, &fx), (h.projection.y, &fy)] {
+                    let err = ulps_error(c, e);
+                    assert!(err <= 1.0, "{h:?}: {err} ulps");
+                    worst_winner = worst_winner.max(err);
+                }
+            }
+        }
+    }
+    println!("projections: bulk worst {worst_bulk:.3} ulps, winners worst {worst_winner:.3} ulps");
+}
