@@ -767,3 +767,20 @@ fn projections_within_their_bounds() {
     }
     println!("projections: bulk worst {worst_bulk:.3} ulps, winners worst {worst_winner:.3} ulps");
 }
+
+#[test]
+fn extreme_scales() {
+    // Exact power-of-two scalings of every relation: the plain first values overflow or fall below
+    // their threshold and the exactly rounded paths take over; the bounds still hold.
+    let mut rng = SplitMix64::new(37);
+    let mut w = Worst::default();
+    for e in [-480, -400, 400, 480] {
+        let s = 2f64.powi(e);
+        for (p, q) in relation_pairs(&mut rng, 7, 9) {
+            let p: Vec<DVec2> = p.iter().map(|&v| v * s).collect();
+            let q: Vec<DVec2> = q.iter().map(|&v| v * s).collect();
+            w.merge(check::<Robust>(&p, &q));
+        }
+    }
+    println!("extreme scales: {w:?}");
+}

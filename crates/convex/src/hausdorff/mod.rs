@@ -186,9 +186,11 @@ fn enclosure(q: &[DVec2], v: DVec2, near: Near) -> (f64, f64) {
             let err = 8.0 * U * (t1.abs() + t2.abs()) + TINY;
             let l = e.x * e.x + e.y * e.y;
             let (cl, ch) = ((c - err).max(0.0), c + err);
+            // (c/L)·c rather than c²/L: the degree-4 intermediate would underflow or overflow at
+            // extreme scales.
             (
-                (cl * cl / l) * (1.0 - 16.0 * U),
-                (ch * ch / l) * (1.0 + 16.0 * U) + TINY,
+                (cl / l * cl) * (1.0 - 16.0 * U),
+                (ch / l * ch) * (1.0 + 16.0 * U) + TINY,
             )
         }
     };

@@ -119,6 +119,45 @@ fn residual<const N: usize, P: Polynomial<N>>(poly: &P, x: &[f64; N], hi: f64, s
 /// With `precise`, the projection is within 1 ulp per coordinate (for the few reported winners);
 /// otherwise within `0.5 ulp + 16u·δ` (for bulk per-vertex records), see [`foot`].
 pub(crate) fn term(q: &[DVec2], v: DVec2, near: Near, precise: bool) -> Term {
+    // Scale-invariance: squared distances scale by 4^k when the coordinates scale by 2^k. Points whose
+    // differences are far from 1 are scaled by a power of two (exact, unless a coordinate 1,000
+    // binades below the others underflows, which moves no value above rounding) so that no product
+    // of the plain first values or of the constructions overflows or underflows; the results are
+    // scaled back exactly (unless the result itself is out of range).
+    let (a, b) = match near {
+        Near::Inside | Near::OnVertex(_) | Near::OnEdge(_) => {
+            return term_unscaled(q, v, near, precise);
+        }
+        Near::Vertex(i) => (q[i], q[i]),
+        Near::Edge(i) => (q[i], q[if i + 1 == q.len() { 0 } else { i + 1 }]),
+    };
+    let (e, w) = (b - a, v - a);
+    let md = e.abs().max_element().max(w.abs().max_element());
+    const LO: f64 = 1.0 / 1_267_650_600_228_229_401_496_703_205_376.0; // 2^-100
+    const HI: f64 = 1_267_650_600_228_229_401_496_703_205_376.0; // 2^100
+    if !(md.is_finite() && md > 0.0) || (LO..=HI).contains(&md) {
+        return term_unscaled(q, v, near, precise);
+    }
+    let k = (-md.log2().floor()).clamp(-600.0, 600.0) as i32;
+    let (up, down) = (2f64.powi(k), 2f64.powi(-k));
+    let local: [DVec2; 2] = [a * up, b * up];
+    let f = match near {
+        Near::Vertex(_) => Near::Vertex(0),
+        _ => Near::Edge(0),
+    };
+    let t = term_unscaled(&local, v * up, f, precise);
+    let sq = |x: f64| x * down * down;
+    Term {
+        hi: sq(t.hi),
+        lo: sq(t.lo),
+        squared: sq(t.squared),
+        distance: t.distance * down,
+        projection: t.projection * down,
+    }
+}
+
+/// [`term`] for points whose differences are within `2^±100`.
+fn term_unscaled(q: &[DVec2], v: DVec2, near: Near, precise: bool) -> Term {
     let zero = Term {
         hi: 0.0,
         lo: 0.0,
