@@ -7,8 +7,9 @@
 //!
 //! Series, per `n` in 64 … 1,048,576:
 //! - `hausdorff_{fast,robust,exact}`: `hausdorff_with::<K>` (two walks and the exact argmax);
-//! - `cmmr_{fast,robust,exact}`: `cmmr_with::<K>` (two walks, every per-vertex term, compensated sum);
-//!   the Exact kernel up to `n = 4,096`;
+//! - `cmmr_{fast,robust,exact}`: `cmmr_with::<K>` (two walks, every per-vertex term and record,
+//!   compensated sum); `cmmr_value_{fast,robust,exact}`: `cmmr_value_with::<K>` (the same value without
+//!   the per-vertex records); the Exact kernel up to `n = 4,096`;
 //! - `brute_continuous`: `hausdorff_brute::<Robust>` (every vertex against every edge, `Θ(nm)`), up to
 //!   `n = 4,096`;
 //! - `geo_discrete`: geo 0.32's `HausdorffDistance::hausdorff_distance` (vertex to vertex, `O(nm)`), up to
@@ -29,7 +30,7 @@ use geo::{HausdorffDistance, LineString, Polygon};
 use glam::DVec2;
 use polydist_convex::polygon::ConvexPolygon;
 use polydist_convex::polygon::predicates::{Exact, Fast, Kernel, Robust};
-use polydist_convex::{cmmr_with, hausdorff_brute, hausdorff_with};
+use polydist_convex::{cmmr_value_with, cmmr_with, hausdorff_brute, hausdorff_with};
 use polydist_oracle::{SplitMix64, random_convex};
 
 /// 64 … 1,048,576 vertices per polygon.
@@ -140,6 +141,11 @@ fn series<K: Kernel>(group: &mut BenchmarkGroup<'_, WallTime>, n: usize, pair: &
         BenchmarkId::new(format!("cmmr_{}", K::NAME), n),
         pair,
         |b, s| b.iter(|| cmmr_with::<K>(black_box(&s.p), black_box(&s.q))),
+    );
+    group.bench_with_input(
+        BenchmarkId::new(format!("cmmr_value_{}", K::NAME), n),
+        pair,
+        |b, s| b.iter(|| cmmr_value_with::<K>(black_box(&s.p), black_box(&s.q))),
     );
 }
 

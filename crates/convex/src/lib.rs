@@ -60,10 +60,11 @@ mod yang;
 pub use brute::distance_brute;
 pub use hausdorff::{
     BoundaryCrossing, Cmmr, Direction, Hausdorff, VertexDistance, boundary_crossings,
-    boundary_crossings_brute, boundary_crossings_with, cmmr, cmmr_brute, cmmr_with,
-    directed_hausdorff, directed_hausdorff_brute, directed_hausdorff_with, hausdorff,
-    hausdorff_brute, hausdorff_squared_exact, hausdorff_with, per_vertex_distances,
-    per_vertex_distances_brute, per_vertex_distances_with, reset_walk_fallbacks, walk_fallbacks,
+    boundary_crossings_brute, boundary_crossings_with, cmmr, cmmr_brute, cmmr_value,
+    cmmr_value_with, cmmr_with, directed_hausdorff, directed_hausdorff_brute,
+    directed_hausdorff_with, hausdorff, hausdorff_brute, hausdorff_squared_exact, hausdorff_with,
+    per_vertex_distances, per_vertex_distances_brute, per_vertex_distances_with,
+    reset_walk_fallbacks, walk_fallbacks,
 };
 pub use hint::{Hint, distance_with_hint};
 pub use pose::{Pose, distance_posed};

@@ -128,6 +128,7 @@ fn check<K: Kernel>(pv: &[DVec2], qv: &[DVec2]) -> Worst {
     // CMMR.
     let c = cmmr_with::<K>(&p, &q);
     assert_eq!(c, cmmr_brute::<K>(&p, &q));
+    assert_eq!(c.value, polydist_convex::cmmr_value_with::<K>(&p, &q));
     let ce = polydist_oracle::cmmr(pv, qv);
     if ce == zero() {
         assert_eq!(c.value, 0.0);

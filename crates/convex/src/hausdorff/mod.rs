@@ -526,6 +526,74 @@ pub fn cmmr(p: &ConvexPolygon, q: &ConvexPolygon) -> Cmmr {
     cmmr_with::<Robust>(p, q)
 }
 
+/// The CMMR distance alone, under the kernel `K`: the value of [`cmmr_with`] (the same terms summed in
+/// the same order, so the same `f64`) without building the per-vertex records (at a million vertices
+/// per polygon those are 160 MB per call).
+///
+/// # Complexity
+/// `O(n + m)` exact predicates and accurate constructions, `O(n + m)` words of memory.
+///
+/// # Examples
+/// ```
+/// use glam::DVec2;
+/// use polydist_convex::{cmmr_value_with, cmmr_with, polygon::ConvexPolygon, polygon::predicates::Robust};
+///
+/// let p = ConvexPolygon::try_new(&[DVec2::ZERO, DVec2::new(2.0, 0.0), DVec2::new(2.0, 2.0), DVec2::new(0.0, 2.0)])?;
+/// let q = ConvexPolygon::try_new(&[DVec2::new(1.0, 1.0), DVec2::new(5.0, 1.0), DVec2::new(5.0, 3.0)])?;
+/// assert_eq!(cmmr_value_with::<Robust>(&p, &q), cmmr_with::<Robust>(&p, &q).value);
+/// # Ok::<(), polydist_convex::polygon::PolygonError>(())
+/// ```
+///
+/// # References
+/// See [`cmmr_with`].
+#[must_use]
+pub fn cmmr_value_with<K: Kernel>(p: &ConvexPolygon, q: &ConvexPolygon) -> f64 {
+    let a = features::<K>(p, q, false);
+    let b = features::<K>(q, p, false);
+    compensated_sum(
+        value_parts(a, p.vertices(), q.vertices()).chain(value_parts(
+            b,
+            q.vertices(),
+            p.vertices(),
+        )),
+    )
+}
+
+/// The `(hi, lo)` parts of the terms of `from`'s vertices with features `near` on `to`.
+fn value_parts<'a>(
+    near: Vec<Near>,
+    from: &'a [DVec2],
+    to: &'a [DVec2],
+) -> impl Iterator<Item = (f64, f64)> + 'a {
+    near.into_iter().enumerate().map(move |(k, f)| {
+        let t = term(to, from[k], f, false);
+        (t.hi, t.lo)
+    })
+}
+
+/// [`cmmr_value_with`] under the default [`Robust`] kernel.
+///
+/// # Complexity
+/// `O(n + m)` exact predicates.
+///
+/// # Examples
+/// ```
+/// use glam::DVec2;
+/// use polydist_convex::{cmmr_value, polygon::ConvexPolygon};
+///
+/// let p = ConvexPolygon::try_new(&[DVec2::ZERO, DVec2::new(3.0, 0.0)])?;
+/// let q = ConvexPolygon::try_new(&[DVec2::new(0.0, 4.0)])?;
+/// assert_eq!(cmmr_value(&p, &q), 16.0 + 25.0 + 16.0);
+/// # Ok::<(), polydist_convex::polygon::PolygonError>(())
+/// ```
+///
+/// # References
+/// See [`cmmr_with`].
+#[must_use]
+pub fn cmmr_value(p: &ConvexPolygon, q: &ConvexPolygon) -> f64 {
+    cmmr_value_with::<Robust>(p, q)
+}
+
 /// The squared Hausdorff distance as an exact rational: the features chosen under the [`Exact`]
 /// kernel, the squared distance of the winning vertex–feature pair computed without rounding
 /// (`polydist_predicates::exact`).
