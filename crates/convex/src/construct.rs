@@ -125,8 +125,67 @@ pub(crate) fn vertex_edge(x: DVec2, a: DVec2, b: DVec2) -> Built {
         let c = round_value(&Cross, &input).abs();
         (c / l.sqrt(), (c / l) * c)
     };
-    // The foot f = x − (c/L)·(−e_y, e_x): f_x·L = x_x·L + c·e_y and f_y·L = x_y·L − c·e_x (the same
-    // exact values as a_k·L + ((x − a)·e)·e_k, which `FootResidual` evaluates).
+    Built {
+        distance,
+        squared,
+        vertex: x,
+        other: foot_from(
+            x,
+            a,
+            b,
+            Shared {
+                ex,
+                ey,
+                len2,
+                cross,
+            },
+            l,
+        ),
+    }
+}
+
+/// The double-double subexpressions of a vertex–edge construction: `e = b − a` (exact), `L = |e|²` and
+/// the cross product `c = e × (x − a)`.
+#[derive(Clone, Copy)]
+struct Shared {
+    ex: DoubleDouble,
+    ey: DoubleDouble,
+    len2: DoubleDouble,
+    cross: DoubleDouble,
+}
+
+/// The foot of `x` on the line `ab` (`l = fl(|b − a|²)`), each coordinate within 1 ulp (see
+/// [`foot_coordinate`]).
+pub(crate) fn foot(x: DVec2, a: DVec2, b: DVec2, l: f64) -> DVec2 {
+    let diff = DoubleDouble::difference;
+    let (ex, ey) = (diff(b.x, a.x), diff(b.y, a.y));
+    let (wx, wy) = (diff(x.x, a.x), diff(x.y, a.y));
+    let len2 = ex.square().add(&ey.square());
+    let cross = ex.mul(&wy).sub(&ey.mul(&wx));
+    foot_from(
+        x,
+        a,
+        b,
+        Shared {
+            ex,
+            ey,
+            len2,
+            cross,
+        },
+        l,
+    )
+}
+
+/// The foot from the shared subexpressions: `f = x − (c/L)·(−e_y, e_x)`, so `f_x·L = x_x·L + c·e_y` and
+/// `f_y·L = x_y·L − c·e_x` (the same exact values as `a_k·L + ((x − a)·e)·e_k`, which `FootResidual`
+/// evaluates for the exact fallback).
+fn foot_from(x: DVec2, a: DVec2, b: DVec2, s: Shared, l: f64) -> DVec2 {
+    let Shared {
+        ex,
+        ey,
+        len2,
+        cross,
+    } = s;
     let ratio = cross.estimate().0 / l;
     let coord = |k: usize| {
         let (xk, start) = if k == 0 {
@@ -135,7 +194,7 @@ pub(crate) fn vertex_edge(x: DVec2, a: DVec2, b: DVec2) -> Built {
             (x.y, x.y - ratio * ex.estimate().0)
         };
         let residual = |g: f64| {
-            let moved = diff(xk, g).mul(&len2);
+            let moved = DoubleDouble::difference(xk, g).mul(&len2);
             if k == 0 {
                 moved.add(&cross.mul(&ey))
             } else {
@@ -152,12 +211,7 @@ pub(crate) fn vertex_edge(x: DVec2, a: DVec2, b: DVec2) -> Built {
         };
         foot_coordinate(start, residual, l, exact_residual)
     };
-    Built {
-        distance,
-        squared,
-        vertex: x,
-        other: DVec2::new(coord(0), coord(1)),
-    }
+    DVec2::new(coord(0), coord(1))
 }
 
 /// One coordinate `N/L` of the foot, within 1 ulp, refined from the estimate `g`.

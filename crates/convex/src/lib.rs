@@ -21,6 +21,11 @@
 //! - [`min_vertex_distance`] / [`min_vertex_distance_with`]: the nearest pair of *vertices*, McKenna and
 //!   Toussaint (1985), `O(m + n)` for disjoint polygons (`O((m + n) log(m + n))` otherwise), with its
 //!   brute-force twin [`min_vertex_distance_brute`].
+//! - [`hausdorff`], [`directed_hausdorff`], [`cmmr`], [`per_vertex_distances`] (and their `_with`
+//!   and `_brute` forms, [`hausdorff_squared_exact`]): Hausdorff and CMMR distances of filled convex
+//!   polygons in `O(n + m)` (Atallah 1983; Atallah, Ribeiro, Lifschitz 1991), disjoint or not, and
+//!   [`boundary_crossings`]: where `∂P` enters and leaves `Q`, kept symbolic (the intersection structure
+//!   behind their piece decomposition).
 //!
 //! # Numbers
 //! Exact predicates, inexact constructions. Every decision is the sign of a polynomial in the input
@@ -54,6 +59,7 @@ mod construct;
 mod contact;
 mod exact;
 mod extreme;
+mod hausdorff;
 mod hint;
 mod linear;
 mod meet;
@@ -68,6 +74,14 @@ mod yang;
 pub use brute::distance_brute;
 pub use contact::{contact, contact_with, intersects};
 pub use exact::distance_exact;
+pub use hausdorff::{
+    BoundaryCrossing, Cmmr, Direction, Hausdorff, VertexToPolygon, boundary_crossings,
+    boundary_crossings_brute, boundary_crossings_with, cmmr, cmmr_brute, cmmr_value,
+    cmmr_value_with, cmmr_with, directed_hausdorff, directed_hausdorff_brute,
+    directed_hausdorff_with, hausdorff, hausdorff_brute, hausdorff_squared_exact, hausdorff_with,
+    per_vertex_distances, per_vertex_distances_brute, per_vertex_distances_with,
+    reset_walk_fallbacks, walk_fallbacks,
+};
 pub use hint::{Hint, distance_with_hint};
 pub use meet::Contact;
 pub use pose::{Pose, distance_posed};

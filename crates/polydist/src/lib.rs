@@ -41,7 +41,10 @@ pub use polydist_convex as convex;
 pub use polydist_polygon as polygon;
 pub use polydist_predicates as predicates;
 
-pub use polydist_convex::{VertexDistance, min_vertex_distance, min_vertex_distance_with};
+pub use polydist_convex::{
+    Cmmr, Hausdorff, VertexDistance, VertexToPolygon, cmmr, directed_hausdorff, hausdorff,
+    min_vertex_distance, min_vertex_distance_with, per_vertex_distances,
+};
 pub use polydist_polygon::{
     ConvexPolygon, Feature, Location, PolygonError, Segment, SimplePolygon,
 };
