@@ -625,7 +625,15 @@ fn first_contact<K: Kernel>(
         }
         let h = (d / v).next_down().max(0.0);
         if h < params.tolerance {
-            let probe = (t + params.tolerance).min(end);
+            // The float t + tolerance, moved down (at most twice) so the bracket is no wider than
+            // the tolerance as computed in f64.
+            let mut probe = t + params.tolerance;
+            for _ in 0..2 {
+                if probe - t > params.tolerance {
+                    probe = probe.next_down();
+                }
+            }
+            let probe = probe.min(end);
             result.probes += 1;
             costs.intersection_tests += 1;
             match pose_both(probe) {
