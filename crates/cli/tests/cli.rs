@@ -620,3 +620,28 @@ fn a_failing_pair_sets_the_exit_status_and_keeps_the_others() {
     assert_eq!(pairs[2]["frames"][0]["distance"].as_f64(), Some(4.0));
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// The complete example of docs/scene-format.md is fixtures/scenes/example.toml, and it runs.
+#[test]
+fn the_documented_example_is_a_fixture_and_runs() {
+    let doc = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../../docs/scene-format.md"),
+    )
+    .unwrap();
+    let start = doc.find("```toml\n").unwrap() + "```toml\n".len();
+    let end = start + doc[start..].find("```").unwrap();
+    let path = fixtures().join("scenes/example.toml");
+    assert_eq!(&doc[start..end], std::fs::read_to_string(&path).unwrap());
+    let (code, r) = run_json(&["run", "--json", path.to_str().unwrap()]);
+    assert_eq!(code, 0);
+    assert_eq!(r["pairs"].as_array().unwrap().len(), 3);
+    let bodies = read_bodies(&path);
+    check_frames(&r, &bodies);
+    check_contact(&r, &bodies, 0.0, 6.0);
+    // Every fixture scene passes `check`.
+    for entry in std::fs::read_dir(fixtures().join("scenes")).unwrap() {
+        let p = entry.unwrap().path();
+        let (code, out, err) = run(&["check", p.to_str().unwrap()]);
+        assert_eq!(code, 0, "{}: {out}{err}", p.display());
+    }
+}
