@@ -17,7 +17,8 @@
 //! Conservative advancement: at time `t` with certified distance `d` (the computed distance minus
 //! its error and the posing error, rounded down) and a bound `V` on the relative speed of any
 //! boundary point over `[t, end]` ([`relative_speed_bound`]), no contact happens before
-//! `t + d / V`, so `t` advances by `d / V` rounded down. When that step is smaller than the
+//! `t + d / V`, so `t` advances by `d / V` rounded down (or farther when a shorter window has a
+//! smaller bound, see `safe_step`). When that step is smaller than the
 //! `tolerance`, the exact intersection test probes `t + tolerance`; a hit gives the bracket
 //! `[t_safe, t_hit] = [t, t + tolerance]`. Reaching `end` certifies the pair apart, and the clearance
 //! bound comes from both ends of every step: on `[t_i, t_{i+1}]` (length `L`),
@@ -39,7 +40,7 @@ use polydist_polygon::predicates::{Counted, Exact, Fast, Kernel, Robust, predica
 use polydist_polygon::{ConvexPolygon, Feature, PolygonError};
 
 use crate::load::{Body, ContactParams, Scene, Shape};
-use crate::motion::{down, pose_error, relative_speed_bound, up};
+use crate::motion::{Motion, down, pose_error, relative_speed_bound, up};
 use crate::report::{
     ClosestPoints, ContactOutcome, ContactResult, Cost, Costs, FrameResult, PairReport, Report,
     Status, TimeReport, VertexDistanceResult,
@@ -527,6 +528,51 @@ fn step_clearance(d0: f64, d1: f64, v: f64, len: f64) -> f64 {
     down(raw - 2.0 * f64::EPSILON * (d0 + d1 + vl))
 }
 
+/// The float `t + d/v` rounded down twice (the quotient, then the sum): no more than the exact
+/// `t + d/v`.
+fn advance(t: f64, d: f64, v: f64) -> f64 {
+    (t + (d / v).next_down().max(0.0)).next_down()
+}
+
+/// The next time of conservative advancement from `t` with certified distance `d`, and the speed
+/// bound valid on `[t, next]`; `None` when the bodies do not move relative to each other for the
+/// rest of the span.
+///
+/// The bound over `[t, end]` gives `t + d/V`. With keyframes the speed may be lower near `t` than
+/// later: windows `[t, t + w]` with `w` doubling (at most 8 times) from twice that step give
+/// `min(t + w, t + d/V_w)`, valid because `V_w` bounds the speed on the window; the farthest wins.
+fn safe_step(a: &Body, b: &Body, t: f64, end: f64, d: f64) -> Option<(f64, f64)> {
+    let bound = |hi: f64| relative_speed_bound(&a.motion, a.radius, &b.motion, b.radius, t, hi);
+    let v_all = bound(end);
+    if v_all == 0.0 {
+        return None;
+    }
+    let mut best = (advance(t, d, v_all).min(end), v_all);
+    let keyframed = |m: &Motion| matches!(m, Motion::Keyframes(_));
+    if !(keyframed(&a.motion) || keyframed(&b.motion)) {
+        // Constant velocities: every window has the same bound.
+        return Some(best);
+    }
+    let mut w = 2.0 * (best.0 - t);
+    for _ in 0..8 {
+        let w_end = t + w;
+        if !(w_end > t && w_end < end) {
+            break;
+        }
+        let v_w = bound(w_end);
+        let candidate = if v_w == 0.0 {
+            w_end
+        } else {
+            advance(t, d, v_w).min(w_end)
+        };
+        if candidate > best.0 {
+            best = (candidate, v_w);
+        }
+        w *= 2.0;
+    }
+    Some(best)
+}
+
 /// What `first_contact` did, for [`Costs`].
 #[derive(Default)]
 struct ContactCounts {
@@ -615,15 +661,14 @@ fn first_contact<K: Kernel>(
             result.clearance_lower_bound = Some(clearance.min(d));
             return result;
         }
-        let v = relative_speed_bound(&a.motion, a.radius, &b.motion, b.radius, t, end);
-        if v == 0.0 {
+        let Some((next, v)) = safe_step(a, b, t, end, d) else {
             // No relative motion for the rest of the span: the distance stays d.
             result.outcome = ContactOutcome::Apart;
             result.t_safe = Some(end);
             result.clearance_lower_bound = Some(clearance.min(d));
             return result;
-        }
-        let h = (d / v).next_down().max(0.0);
+        };
+        let h = next - t;
         if h < params.tolerance {
             // The float t + tolerance, moved down (at most twice) so the bracket is no wider than
             // the tolerance as computed in f64.
@@ -651,8 +696,6 @@ fn first_contact<K: Kernel>(
                 }
             }
         }
-        // The exact t + h is at least the float below the rounded sum.
-        let next = (t + h).next_down().min(end);
         if next <= t {
             result.message = Some(format!(
                 "the safe step ({h:e}) vanished at t = {t} (distance {:e}, speed bound {v:e})",

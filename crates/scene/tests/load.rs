@@ -305,36 +305,99 @@ fn effect_names_round_trip() {
     }
 }
 
-/// Fragments of scene files, to build texts that are often nearly valid.
-const FRAGMENTS: &[&str] = &[
-    "[[body]]\n",
-    "id = \"a\"\n",
-    "id = \"b\"\n",
-    "vertices = [[0, 0], [1, 0], [0, 1]]\n",
-    "vertices = [[0, 0], [1, 1], [1, 0], [0, 1]]\n",
-    "vertices = []\n",
-    "generator = { type = \"regular\", n = 5, radius = 1.0 }\n",
-    "generator = { type = \"star\", points = 4, outer = 1.0, inner = 2.0 }\n",
-    "generator = { type = \"random_convex\", n = 9, radius = 1e300, seed = 3 }\n",
-    "motion = { type = \"linear\", velocity = [1.0, 0.5], angular = 2.0 }\n",
-    "motion = { type = \"keyframes\", keys = [{ t = 0 }, { t = 1, x = 3, angle = 9 }] }\n",
-    "pose = { x = 2.0, y = -1.0, angle = 0.5 }\n",
-    "kind = \"convex\"\n",
-    "kind = \"simple\"\n",
-    "[[query]]\n",
-    "pairs = \"all\"\n",
-    "pairs = [[\"a\", \"b\"]]\n",
-    "effects = [\"distance\", \"closest_points\", \"vertex_distance\", \"first_contact\"]\n",
-    "effects = [\"hausdorff\"]\n",
-    "tolerance = 0.001\n",
-    "max_steps = 50\n",
-    "time = { end = 2.0, step = 0.5 }\n",
-    "time = { end = -2.0, step = 0.0 }\n",
-    "kernel = \"exact\"\n",
-    "kernel = \"fast\"\n",
-    "= = [\n",
-    "\"\n",
+const SHAPES: &[&str] = &[
+    "vertices = [[0, 0], [1, 0], [0, 1]]",
+    "vertices = [[3, 3], [4, 3], [4, 4], [3, 4]]",
+    "vertices = [[0, 0], [2, 0], [2, 1], [1, 1], [1, 2], [0, 2]]",
+    "vertices = [[0, 0], [1, 1], [1, 0], [0, 1]]",
+    "vertices = [[5, 5]]",
+    "vertices = [[-2, 0], [-1, 1]]",
+    "vertices = []",
+    "generator = { type = \"regular\", n = 7, radius = 0.5 }",
+    "generator = { type = \"random_convex\", n = 12, radius = 1.5, seed = 9 }",
+    "generator = { type = \"star\", points = 4, outer = 1.0, inner = 0.4 }",
+    "generator = { type = \"comb\", teeth = 2, width = 0.3, height = 1.0, spine = 0.2 }",
+    "generator = { type = \"regular\", n = 2, radius = 1.0 }",
 ];
+const POSES: &[&str] = &[
+    "",
+    "pose = { x = 2.0, y = -1.0, angle = 0.5 }\n",
+    "pose = { x = 1e200 }\n",
+];
+const MOTIONS: &[&str] = &[
+    "",
+    "motion = { type = \"static\" }\n",
+    "motion = { type = \"linear\", velocity = [1.0, 0.5], angular = 2.0 }\n",
+    "motion = { type = \"linear\", velocity = [-3.0, 0.0] }\n",
+    "motion = { type = \"keyframes\", keys = [{ t = 0 }, { t = 1, x = 3, angle = 9 }] }\n",
+    "motion = { type = \"keyframes\", keys = [{ t = 1 }, { t = 0 }] }\n",
+];
+const KINDS: &[&str] = &["", "kind = \"convex\"\n", "kind = \"simple\"\n"];
+const PAIRS: &[&str] = &[
+    "\"all\"",
+    "[[\"a\", \"b\"]]",
+    "[[\"b\", \"c\"], [\"a\", \"c\"]]",
+    "[[\"a\", \"a\"]]",
+    "[]",
+];
+const TIMES: &[&str] = &[
+    "",
+    "time = { end = 2.0, step = 0.5 }\n",
+    "time = { start = 1.0, end = 3.0, step = 0.25 }\n",
+    "time = { end = -2.0, step = 0.0 }\n",
+];
+
+/// A scene text from structured choices: usually valid TOML, often a valid scene.
+fn scene_text(
+    time: usize,
+    kernel: usize,
+    bodies: &[(usize, usize, usize, usize)],
+    queries: &[(usize, Vec<bool>, bool)],
+) -> String {
+    let mut s = String::from(TIMES[time]);
+    s.push_str(["", "kernel = \"fast\"\n", "kernel = \"exact\"\n"][kernel]);
+    for (i, &(shape, pose, motion, kind)) in bodies.iter().enumerate() {
+        let id = ["a", "b", "c", "d"][i];
+        s.push_str(&format!(
+            "[[body]]\nid = \"{id}\"\n{}\n{}{}{}",
+            SHAPES[shape], POSES[pose], MOTIONS[motion], KINDS[kind]
+        ));
+    }
+    for (pairs, effects, params) in queries {
+        let list: Vec<String> = Effect::ALL
+            .iter()
+            .zip(effects)
+            .filter(|(_, on)| **on)
+            .map(|(e, _)| format!("\"{}\"", e.name()))
+            .collect();
+        s.push_str(&format!(
+            "[[query]]\npairs = {}\neffects = [{}]\n",
+            PAIRS[*pairs],
+            list.join(", ")
+        ));
+        if *params {
+            s.push_str("tolerance = 0.001\nmax_steps = 40\n");
+        }
+    }
+    s
+}
+
+fn body_strategy() -> impl Strategy<Value = (usize, usize, usize, usize)> {
+    (
+        0..SHAPES.len(),
+        0..POSES.len(),
+        0..MOTIONS.len(),
+        0..KINDS.len(),
+    )
+}
+
+fn query_strategy() -> impl Strategy<Value = (usize, Vec<bool>, bool)> {
+    (
+        0..PAIRS.len(),
+        proptest::collection::vec(proptest::bool::weighted(0.3), 7),
+        any::<bool>(),
+    )
+}
 
 proptest! {
     #![proptest_config(ProptestConfig { cases: 400, ..ProptestConfig::default() })]
@@ -346,12 +409,17 @@ proptest! {
         let _ = load_str(&text, &Origin::text("fuzz.json"));
     }
 
-    /// Texts assembled from scene fragments: loading never panics, and what loads also runs
-    /// without panicking.
+    /// Structured scenes: loading never panics, errors are never empty, and what loads also runs
+    /// without panicking and reports one entry per planned pair.
     #[test]
-    fn assembled_scenes_load_and_run_without_panic(picks in proptest::collection::vec(0..FRAGMENTS.len(), 0..24)) {
-        let text: String = picks.iter().map(|&i| FRAGMENTS[i]).collect();
-        match load_str(&text, &Origin::text("frag.toml")) {
+    fn structured_scenes_load_and_run_without_panic(
+        time in 0..TIMES.len(),
+        kernel in 0..3usize,
+        bodies in proptest::collection::vec(body_strategy(), 0..4),
+        queries in proptest::collection::vec(query_strategy(), 0..3),
+    ) {
+        let text = scene_text(time, kernel, &bodies, &queries);
+        match load_str(&text, &Origin::text("gen.toml")) {
             Ok(scene) => {
                 let report = polydist_scene::run(&scene, &polydist_scene::RunOptions::default());
                 prop_assert_eq!(report.pairs.len(), polydist_scene::plan(&scene).jobs.len());
@@ -360,4 +428,45 @@ proptest! {
             Err(SceneErrors(e)) => prop_assert!(!e.is_empty()),
         }
     }
+}
+
+/// The structured generator reaches valid scenes often enough for the property above to run
+/// scenes, not only to reject them.
+#[test]
+fn structured_scenes_are_often_valid() {
+    let mut valid = 0;
+    let mut ran_pairs = 0;
+    for k in 0..500usize {
+        let pick = |m: usize, salt: usize| (k.wrapping_mul(2_654_435_761) >> (salt * 3)) % m;
+        let n = pick(4, 1);
+        let bodies: Vec<_> = (0..n)
+            .map(|i| {
+                (
+                    pick(SHAPES.len(), 2 + i) % 3 + usize::from(i % 2 == 1) * 7,
+                    pick(2, 3 + i),
+                    pick(MOTIONS.len() - 1, 4 + i),
+                    0,
+                )
+            })
+            .collect();
+        let effects = vec![
+            true,
+            pick(2, 5) == 1,
+            pick(2, 6) == 1,
+            false,
+            false,
+            false,
+            pick(2, 7) == 1,
+        ];
+        let queries = vec![(pick(2, 8), effects, true)];
+        let text = scene_text(pick(3, 9), pick(3, 10), &bodies, &queries);
+        if let Ok(scene) = load_str(&text, &Origin::text("gen.toml")) {
+            valid += 1;
+            ran_pairs += polydist_scene::run(&scene, &polydist_scene::RunOptions::default())
+                .pairs
+                .len();
+        }
+    }
+    assert!(valid >= 100, "{valid} valid of 500");
+    assert!(ran_pairs >= 100, "{ran_pairs} pairs run");
 }

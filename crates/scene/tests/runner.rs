@@ -529,3 +529,36 @@ fn invalid_body_at_some_frames_is_reported_and_the_run_goes_on() {
     assert!(!bc.failed);
     assert_eq!(bc.frames[0].distance, Some(4.0));
 }
+
+/// A keyframed body that waits, then rushes: windowed speed bounds let the advancement take long
+/// steps while it waits (the bound over the whole span would force steps of distance / 100).
+#[test]
+fn first_contact_windows_skip_the_wait() {
+    // b sits at x = 11 until t = 100, then moves left at speed 100: it reaches a (x ≤ 1) at t = 100.1.
+    let text = format!(
+        r#"
+        time = {{ end = 101.0, step = 1.0 }}
+        [[body]]
+        id = "a"
+        vertices = {}
+        [[body]]
+        id = "b"
+        vertices = {}
+        motion = {{ type = "keyframes", keys = [{{ t = 0, x = 11 }}, {{ t = 100, x = 11 }}, {{ t = 101, x = -89 }}] }}
+        [[query]]
+        pairs = [["a", "b"]]
+        effects = ["first_contact"]
+        tolerance = 1e-9
+        "#,
+        square(0.0, 0.0, 1.0),
+        square(0.0, 0.0, 1.0)
+    );
+    let c = run_default(&scene(&text)).pairs[0]
+        .first_contact
+        .clone()
+        .unwrap();
+    assert_eq!(c.outcome, ContactOutcome::Contact, "{c:?}");
+    let (safe, hit) = (c.t_safe.unwrap(), c.t_hit.unwrap());
+    assert!(safe <= 100.1 && 100.1 <= hit, "[{safe}, {hit}]");
+    assert!(c.steps < 30, "{} steps", c.steps);
+}
