@@ -173,6 +173,9 @@ fn line_col(text: &str, offset: usize) -> (usize, usize) {
 ///
 /// # Errors
 /// [`SceneError::Syntax`].
+///
+/// # Complexity
+/// Linear in the text.
 pub fn parse_spec(text: &str, origin: &Origin) -> Result<SceneSpec, SceneError> {
     let json = origin.json.unwrap_or_else(|| {
         let lower = origin.name.to_ascii_lowercase();
@@ -208,6 +211,9 @@ pub fn parse_spec(text: &str, origin: &Origin) -> Result<SceneSpec, SceneError> 
 ///
 /// # Errors
 /// [`SceneError::Io`] when the file cannot be read, and every problem [`load_str`] finds.
+///
+/// # Complexity
+/// That of [`load_str`].
 pub fn load_file(path: &Path) -> Result<Scene, SceneErrors> {
     let text = std::fs::read_to_string(path).map_err(|e| SceneError::Io {
         path: path.display().to_string(),
@@ -266,6 +272,9 @@ pub fn load_str(text: &str, origin: &Origin) -> Result<Scene, SceneErrors> {
 ///
 /// # Errors
 /// Every problem found (see [`load_str`]).
+///
+/// # Complexity
+/// That of [`load_str`] without the parsing.
 pub fn validate(spec: &SceneSpec, origin: &Origin) -> Result<Scene, SceneErrors> {
     let mut errors = Vec::new();
     let time = validate_time(spec, &mut errors);
@@ -362,7 +371,9 @@ pub fn validate(spec: &SceneSpec, origin: &Origin) -> Result<Scene, SceneErrors>
                 }
             }
         }
-        // Convex-only effects on pairs with a simple body.
+        // Convex-only effects on pairs with a simple body: reported once per query and simple
+        // body (at its first pair), not once per pair of an "all" query.
+        let mut reported = std::collections::HashSet::new();
         for &(a, b) in &pairs {
             let simple = [a, b].into_iter().find(|&i| {
                 matches!(
@@ -373,7 +384,7 @@ pub fn validate(spec: &SceneSpec, origin: &Origin) -> Result<Scene, SceneErrors>
                     }))
                 )
             });
-            if let Some(s) = simple {
+            if let Some(s) = simple.filter(|&s| reported.insert(s)) {
                 for e in effects.iter().filter(|e| e.is_available()) {
                     errors.push(SceneError::NeedsConvex {
                         query: name.clone(),
@@ -685,6 +696,9 @@ fn body_vertices(
 ///
 /// # Errors
 /// A message naming the line and what was expected.
+///
+/// # Complexity
+/// Linear in the text.
 pub fn parse_polygon_file(text: &str, json: bool) -> Result<Vec<DVec2>, String> {
     if json {
         let v: Vec<[f64; 2]> = serde_json::from_str(text).map_err(|e| e.to_string())?;

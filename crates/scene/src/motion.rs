@@ -153,7 +153,25 @@ impl Motion {
 /// radii about their frames' origins (already rounded up).
 ///
 /// # Complexity
-/// `O((k_P + k_Q) log(k_P + k_Q))` for keyframed motions with `k` keys in `[a, b]`, else `O(1)`.
+/// `O(K + k log k)` for keyframed motions with `K` keys in all and `k` of them in `[a, b]`, else
+/// `O(1)`.
+///
+/// # References
+/// J. T. Schwartz, "Finding the minimum distance between two convex polygons", Information
+/// Processing Letters 13(4–5), 1981, §1, with the erratum of papers/INDEX.md (relative translation).
+///
+/// # Examples
+/// ```
+/// use glam::DVec2;
+/// use polydist_convex::Pose;
+/// use polydist_scene::{Motion, relative_speed_bound};
+///
+/// // Moving together: no relative translation, only the spin of the second body (|ω|·r = 2·1.5).
+/// let p = Motion::Linear { start: Pose::IDENTITY, velocity: DVec2::new(3.0, 4.0), angular: 0.0 };
+/// let q = Motion::Linear { start: Pose::IDENTITY, velocity: DVec2::new(3.0, 4.0), angular: 2.0 };
+/// let v = relative_speed_bound(&p, 1.0, &q, 1.5, 0.0, 10.0);
+/// assert!(v >= 3.0 && v < 3.0 + 1e-12);
+/// ```
 #[must_use]
 pub fn relative_speed_bound(mp: &Motion, r_p: f64, mq: &Motion, r_q: f64, a: f64, b: f64) -> f64 {
     let mut cuts = vec![a];

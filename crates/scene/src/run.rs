@@ -161,6 +161,12 @@ impl Default for RunOptions {
 /// good hint) and `O(n + m)` for `vertex_distance`. `first_contact`: `O(n + m)` per step, at most
 /// `max_steps` steps.
 ///
+/// # References
+/// J. T. Schwartz, "Finding the minimum distance between two convex polygons", Information
+/// Processing Letters 13(4–5), 1981, §1 (conservative advancement; the motion bound with the
+/// erratum of papers/INDEX.md); C.-L. Yang et al., J. Zhejiang Univ. SCIENCE A, 2006 (the distance
+/// query); M. McKenna, G. T. Toussaint, Comp. & Maths. with Appls., 1985 (vertex distance).
+///
 /// # Examples
 /// ```
 /// use polydist_scene::{Origin, RunOptions, load_str, run};
@@ -223,7 +229,7 @@ impl Meter {
         cost.micros += u64::try_from(clock.elapsed().as_micros()).unwrap_or(u64::MAX);
         cost.calls += 1;
         if let Some(b) = before {
-            *cost.predicates.get_or_insert(0) += predicate_counts().total() - b;
+            *cost.predicates.get_or_insert(0) += predicate_counts().total().saturating_sub(b);
         }
         out
     }
