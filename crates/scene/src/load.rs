@@ -326,13 +326,15 @@ pub fn validate(spec: &SceneSpec, origin: &Origin) -> Result<Scene, SceneErrors>
             }
             effects.insert(e);
         }
+        // A given tolerance must be positive (with 0 the bracket could never be confirmed); the
+        // default is 0 only for a span of length 0, where no step is ever taken.
         let tolerance = q
             .tolerance
             .unwrap_or(DEFAULT_RELATIVE_TOLERANCE * span.max(0.0));
-        if !(tolerance.is_finite() && tolerance >= 0.0) {
+        if q.tolerance.is_some() && !(tolerance.is_finite() && tolerance > 0.0) {
             errors.push(SceneError::BadParameter {
                 query: name.clone(),
-                reason: format!("tolerance must be finite and ≥ 0 (got {tolerance})"),
+                reason: format!("tolerance must be finite and > 0 (got {tolerance})"),
             });
         }
         let max_steps = q.max_steps.unwrap_or(DEFAULT_MAX_STEPS);

@@ -188,6 +188,44 @@ fn every_problem_is_reported() {
 }
 
 #[test]
+fn first_contact_parameters_are_checked() {
+    let q = |extra: &str| {
+        format!(
+            "[[body]]\nid = \"a\"\nvertices = [[0, 0], [1, 0], [0, 1]]\n[[body]]\nid = \"b\"\nvertices = [[5, 0], [6, 0], [5, 1]]\n[[query]]\npairs = \"all\"\neffects = [\"first_contact\"]\n{extra}"
+        )
+    };
+    for bad in [
+        "tolerance = 0.0\n",
+        "tolerance = -1.0\n",
+        "tolerance = nan\n",
+        "max_steps = 0\n",
+    ] {
+        let e = errors(&q(bad));
+        assert!(
+            matches!(e[0], SceneError::BadParameter { .. }),
+            "{bad}: {e:?}"
+        );
+    }
+    assert!(
+        load_str(
+            &q("tolerance = 1e-12\nmax_steps = 1\n"),
+            &Origin::text("q.toml")
+        )
+        .is_ok()
+    );
+    // Two queries asking first_contact on one pair with different parameters.
+    let text = format!(
+        "{}[[query]]\npairs = [[\"b\", \"a\"]]\neffects = [\"first_contact\"]\ntolerance = 0.5\n",
+        q("")
+    );
+    let e = errors(&text);
+    assert!(
+        matches!(e[0], SceneError::ConflictingParameters { .. }),
+        "{e:?}"
+    );
+}
+
+#[test]
 fn limits_refuse_huge_spans_and_generators() {
     let e = errors("time = { end = 1e15, step = 1.0 }\n");
     assert!(matches!(
