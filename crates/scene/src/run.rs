@@ -20,7 +20,8 @@
 //! `t + d / V`, so `t` advances by `d / V` rounded down (or farther when a shorter window has a
 //! smaller bound, see `safe_step`). When that step is smaller than the
 //! `tolerance`, the exact intersection test probes `t + tolerance`; a hit gives the bracket
-//! `[t_safe, t_hit] = [t, t + tolerance]`. Reaching `end` certifies the pair apart, and the clearance
+//! `[t_safe, t_hit]` with `t_hit = t + tolerance` and `t_safe` the end of the safe step from `t`
+//! (certified too). Reaching `end` certifies the pair apart, and the clearance
 //! bound comes from both ends of every step: on `[t_i, t_{i+1}]` (length `L`),
 //! `D(s) ≥ max(d_i − V·s, d_{i+1} − V·(L − s)) ≥ (d_i + d_{i+1} − V·L) / 2`, a certified lower
 //! bound that is not a sampled minimum.
@@ -692,6 +693,10 @@ fn first_contact<K: Kernel>(
                     if intersects::<K>(&qa.poly, &qb.poly) {
                         result.outcome = ContactOutcome::Contact;
                         result.t_hit = Some(probe);
+                        // The step from t is certified too: the bracket starts at its end.
+                        if next > t && next < probe {
+                            result.t_safe = Some(next);
+                        }
                         return result;
                     }
                 }
