@@ -168,7 +168,8 @@ pub enum GeneratorSpec {
         n: u64,
         /// The circle's radius (`> 0`).
         radius: f64,
-        /// The seed (SplitMix64): the same seed gives the same polygon on every machine.
+        /// The seed (SplitMix64): the same seed gives the same polygon on every machine. TOML
+        /// integers are 64-bit signed, so a TOML file can give seeds below 2^63.
         seed: u64,
     },
 }
