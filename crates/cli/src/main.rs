@@ -1,0 +1,188 @@
+//! `polydist`: runs scene files (an embedded default scene when given none) and checks them.
+//!
+//! ```text
+//! polydist                      # runs the embedded default scene (same as `polydist run`)
+//! polydist run [SCENE] [--json] [--kernel fast|robust|exact] [--no-coherence] [--no-count]
+//! polydist check SCENE          # validates and explains every problem, without running
+//! ```
+//!
+//! Exit status: 0 when everything was computed, 1 when some pair failed (all pairs are still
+//! reported), 2 when the scene is invalid or cannot be read.
+
+use std::io::Write as _;
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand, ValueEnum};
+use polydist_scene::{
+    KernelChoice, Origin, RunOptions, Scene, SceneErrors, Shape, load_file, load_str, plan, run,
+};
+
+/// The default scene, shown by `polydist run` without a file.
+const DEFAULT_SCENE: &str = include_str!("../../../fixtures/scenes/default.toml");
+/// Its name in messages.
+const DEFAULT_NAME: &str = "<embedded default scene: fixtures/scenes/default.toml>";
+
+#[derive(Parser, Debug)]
+#[command(
+    name = "polydist",
+    version,
+    about = "Exact planar polygon distances: run a scene and compute exactly the effects it asks for",
+    long_about = "Runs scene files (TOML or JSON, see docs/scene-format.md). Without a subcommand, runs \
+                  the embedded default scene."
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Run a scene (the embedded default scene when no file is given).
+    Run {
+        /// The scene file (TOML, or JSON by extension or content).
+        scene: Option<PathBuf>,
+        /// Print the report as JSON (schema in docs/scene-format.md) instead of a table.
+        #[arg(long)]
+        json: bool,
+        /// Override the scene's precision kernel.
+        #[arg(long, value_enum)]
+        kernel: Option<KernelArg>,
+        /// Turn temporal coherence off (the results are identical; only the cost changes).
+        #[arg(long)]
+        no_coherence: bool,
+        /// Do not count predicates (the `predicates` costs become null).
+        #[arg(long)]
+        no_count: bool,
+    },
+    /// Validate a scene and explain every problem, without running it.
+    Check {
+        /// The scene file.
+        scene: PathBuf,
+    },
+}
+
+#[derive(Clone, Copy, Debug, ValueEnum)]
+enum KernelArg {
+    Fast,
+    Robust,
+    Exact,
+}
+
+impl From<KernelArg> for KernelChoice {
+    fn from(k: KernelArg) -> Self {
+        match k {
+            KernelArg::Fast => KernelChoice::Fast,
+            KernelArg::Robust => KernelChoice::Robust,
+            KernelArg::Exact => KernelChoice::Exact,
+        }
+    }
+}
+
+fn load(scene: Option<&PathBuf>) -> Result<Scene, SceneErrors> {
+    match scene {
+        Some(path) => load_file(path),
+        None => load_str(
+            DEFAULT_SCENE,
+            &Origin {
+                name: DEFAULT_NAME.to_owned(),
+                dir: None,
+                json: Some(false),
+            },
+        ),
+    }
+}
+
+fn print(text: &str) -> ExitCode {
+    let mut out = std::io::stdout().lock();
+    // A closed pipe (`polydist run | head`) is not a failure of the run: the write error is ignored.
+    let _closed = out.write_all(text.as_bytes()).and_then(|()| out.flush());
+    ExitCode::SUCCESS
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    match cli.command {
+        None => run_command(None, false, RunOptions::default()),
+        Some(Command::Run {
+            scene,
+            json,
+            kernel,
+            no_coherence,
+            no_count,
+        }) => run_command(
+            scene.as_ref(),
+            json,
+            RunOptions {
+                kernel: kernel.map(KernelChoice::from),
+                coherence: no_coherence.then_some(false),
+                count_predicates: !no_count,
+            },
+        ),
+        Some(Command::Check { scene }) => check_command(&scene),
+    }
+}
+
+fn run_command(path: Option<&PathBuf>, json: bool, options: RunOptions) -> ExitCode {
+    let scene = match load(path) {
+        Ok(s) => s,
+        Err(e) => {
+            eprint!("{e}");
+            return ExitCode::from(2);
+        }
+    };
+    let report = run(&scene, &options);
+    let text = if json {
+        match serde_json::to_string_pretty(&report) {
+            Ok(mut s) => {
+                s.push('\n');
+                s
+            }
+            Err(e) => {
+                eprintln!("cannot write the report as JSON: {e}");
+                return ExitCode::from(2);
+            }
+        }
+    } else {
+        report.to_table()
+    };
+    let printed = print(&text);
+    if report.failed {
+        eprintln!("polydist: some pairs failed (see the report)");
+        return ExitCode::from(1);
+    }
+    printed
+}
+
+fn check_command(path: &PathBuf) -> ExitCode {
+    match load(Some(path)) {
+        Ok(scene) => {
+            let convex = scene
+                .bodies
+                .iter()
+                .filter(|b| matches!(b.shape, Shape::Convex(_)))
+                .count();
+            let moving = scene
+                .bodies
+                .iter()
+                .filter(|b| !b.motion.is_static())
+                .count();
+            let jobs = plan(&scene).jobs;
+            print(&format!(
+                "{}: ok: scene '{}', {} bodies ({convex} convex, {} simple, {moving} moving), {} queries, {} pairs, {} frames, kernel {}\n",
+                path.display(),
+                scene.name,
+                scene.bodies.len(),
+                scene.bodies.len() - convex,
+                scene.queries.len(),
+                jobs.len(),
+                scene.time.frames,
+                scene.kernel.name()
+            ))
+        }
+        Err(e) => {
+            eprint!("{}: {e}", path.display());
+            ExitCode::from(2)
+        }
+    }
+}

@@ -1,0 +1,441 @@
+//! What a run reports: per pair, per frame and per effect, with the cost of each effect. The field
+//! names are the stable JSON schema of docs/scene-format.md.
+
+use core::fmt::Write as _;
+
+use polydist_polygon::Feature;
+use serde::Serialize;
+
+/// The version of the JSON report schema (`"version"` in the report).
+pub const REPORT_VERSION: u32 = 1;
+
+/// The whole report of a run.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct Report {
+    /// [`REPORT_VERSION`].
+    pub version: u32,
+    /// The scene's name.
+    pub scene: String,
+    /// `fast`, `robust` or `exact`.
+    pub kernel: &'static str,
+    /// Whether temporal coherence was on.
+    pub coherence: bool,
+    /// The time span.
+    pub time: TimeReport,
+    /// One entry per distinct pair, in the order the queries name them.
+    pub pairs: Vec<PairReport>,
+    /// What each effect computed and what it cost.
+    pub costs: Costs,
+    /// `true` when some pair failed (an invalid body at some time, or an undecided `first_contact`).
+    pub failed: bool,
+}
+
+/// The time span of the run.
+#[derive(Clone, Copy, Debug, Serialize, PartialEq)]
+pub struct TimeReport {
+    /// The first frame's time.
+    pub start: f64,
+    /// The end of the span.
+    pub end: f64,
+    /// The frame step.
+    pub step: f64,
+    /// The number of frames.
+    pub frames: usize,
+}
+
+/// The results of one pair.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct PairReport {
+    /// The first body's id.
+    pub a: String,
+    /// The second body's id.
+    pub b: String,
+    /// The kinds of `a` and `b` (`convex` or `simple`).
+    pub kinds: [&'static str; 2],
+    /// The queries that asked for this pair.
+    pub queries: Vec<String>,
+    /// The effects computed for this pair.
+    pub effects: Vec<&'static str>,
+    /// Whether either body moves. Per-frame effects of a pair that does not move are evaluated
+    /// once, at the first frame (`frames` has one entry).
+    pub moving: bool,
+    /// Per-frame results (`distance`, `closest_points`, `vertex_distance`); empty when none asked.
+    pub frames: Vec<FrameResult>,
+    /// The `first_contact` result, when asked.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub first_contact: Option<ContactResult>,
+    /// Whether something failed for this pair (see [`Report::failed`]).
+    pub failed: bool,
+}
+
+/// How the pair relates at one frame.
+#[derive(Clone, Copy, Debug, Serialize, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum Status {
+    /// The bodies do not meet.
+    Disjoint,
+    /// The boundaries meet, the interiors do not.
+    Touching,
+    /// The interiors meet.
+    Overlapping,
+    /// A body is not a valid polygon at this frame (see `error`).
+    Invalid,
+}
+
+/// A feature in the body's own (caller's) vertex indices.
+#[derive(Clone, Copy, Debug, Serialize, PartialEq, Eq)]
+pub struct FeatureRef {
+    /// `vertex` or `edge` (edge `i` joins vertices `i` and `i + 1`).
+    pub kind: &'static str,
+    /// The index.
+    pub index: usize,
+}
+
+impl From<Feature> for FeatureRef {
+    fn from(f: Feature) -> Self {
+        match f {
+            Feature::Vertex(index) => FeatureRef {
+                kind: "vertex",
+                index,
+            },
+            Feature::Edge(index) => FeatureRef {
+                kind: "edge",
+                index,
+            },
+        }
+    }
+}
+
+/// The `closest_points` effect at one frame.
+#[derive(Clone, Copy, Debug, Serialize, PartialEq)]
+pub struct ClosestPoints {
+    /// The realizing point on `a` (world frame). For touching bodies, the contact point.
+    pub point_a: [f64; 2],
+    /// The realizing point on `b`.
+    pub point_b: [f64; 2],
+    /// The feature of `a` containing `point_a`.
+    pub feature_a: FeatureRef,
+    /// The feature of `b` containing `point_b`.
+    pub feature_b: FeatureRef,
+    /// `true` when the bodies face each other along parallel edges (the realizing pair is then not unique).
+    pub parallel: bool,
+}
+
+/// The `vertex_distance` effect at one frame.
+#[derive(Clone, Copy, Debug, Serialize, PartialEq)]
+pub struct VertexDistanceResult {
+    /// The distance between the nearest vertices.
+    pub distance: f64,
+    /// Its square.
+    pub squared_distance: f64,
+    /// The vertex of `a` (caller index).
+    pub vertex_a: usize,
+    /// The vertex of `b` (caller index).
+    pub vertex_b: usize,
+}
+
+/// The per-frame results of a pair.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct FrameResult {
+    /// The frame's time.
+    pub t: f64,
+    /// How the bodies relate (absent when only `vertex_distance` was asked, which needs no contact status).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub status: Option<Status>,
+    /// The distance (`0` when touching or overlapping), when `distance` was asked.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub distance: Option<f64>,
+    /// The squared distance, when `distance` was asked.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub squared_distance: Option<f64>,
+    /// When `closest_points` was asked and the bodies do not overlap.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub closest_points: Option<ClosestPoints>,
+    /// When `vertex_distance` was asked.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub vertex_distance: Option<VertexDistanceResult>,
+    /// Why the frame could not be evaluated (`status` is `invalid`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub error: Option<String>,
+}
+
+/// The outcome of `first_contact`.
+#[derive(Clone, Copy, Debug, Serialize, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum ContactOutcome {
+    /// The bodies first meet in `(t_safe, t_hit]`: apart (certified) on `[start, t_safe]`, meeting at
+    /// `t_hit` (the exact intersection test).
+    Contact,
+    /// The bodies meet at the first time of the span.
+    ContactAtStart,
+    /// The bodies stay apart over the whole span, with `clearance_lower_bound` a certified lower
+    /// bound on their distance at every time of the span.
+    Apart,
+    /// `max_steps` ran out (or the step underflowed) before a decision: apart on `[start, t_safe]`.
+    Undecided,
+    /// A body is not a valid polygon at some time (see `message`).
+    Invalid,
+}
+
+/// The `first_contact` result of a pair.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct ContactResult {
+    /// The outcome.
+    pub outcome: ContactOutcome,
+    /// The bodies are certified apart on `[start, t_safe]`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub t_safe: Option<f64>,
+    /// A time at which the exact intersection test says the bodies meet.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub t_hit: Option<f64>,
+    /// For `apart`: a certified lower bound on the distance over the whole span.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub clearance_lower_bound: Option<f64>,
+    /// Conservative-advancement steps taken (distance queries).
+    pub steps: u64,
+    /// Intersection tests probing `t_safe + tolerance`.
+    pub probes: u64,
+    /// The bracket width asked for.
+    pub tolerance: f64,
+    /// The step limit.
+    pub max_steps: u64,
+    /// For `invalid` and `undecided`: why.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub message: Option<String>,
+}
+
+/// The cost of one stage of the run.
+#[derive(Clone, Copy, Debug, Default, Serialize, PartialEq, Eq)]
+pub struct Cost {
+    /// Calls (queries, poses, steps: see [`Costs`]).
+    pub calls: u64,
+    /// Exact predicates evaluated by these calls (counted by `Counted`; `null` when counting is off).
+    pub predicates: Option<u64>,
+    /// Wall time in microseconds (on this machine, this run; not a benchmark).
+    pub micros: u64,
+}
+
+/// What the run computed, per stage.
+#[derive(Clone, Copy, Debug, Default, Serialize, PartialEq, Eq)]
+pub struct Costs {
+    /// Rigid poses applied and re-validated (`ConvexPolygon::try_new` on the moved vertices). Their
+    /// validation uses the Robust kernel directly, outside the counted kernel.
+    pub pose: Cost,
+    /// Convex distance queries: one per pair and frame serves both `distance` and `closest_points`.
+    pub distance: Cost,
+    /// Of `distance.calls`, the queries started from the previous frame's hint.
+    pub distance_hinted: u64,
+    /// Minimum vertex distance queries (McKenna–Toussaint).
+    pub vertex_distance: Cost,
+    /// `first_contact`: `calls` are pairs; their distance queries and probes are counted here (not in
+    /// `distance`).
+    pub first_contact: Cost,
+    /// `first_contact`: advancement steps over all pairs.
+    pub first_contact_steps: u64,
+    /// `first_contact`: exact intersection tests (probes and confirmations).
+    pub first_contact_intersection_tests: u64,
+}
+
+fn fmt_num(x: f64) -> String {
+    if x == 0.0 || (1e-4..1e7).contains(&x.abs()) {
+        let s = format!("{x:.6}");
+        let s = s.trim_end_matches('0').trim_end_matches('.');
+        s.to_owned()
+    } else {
+        format!("{x:.6e}")
+    }
+}
+
+fn fmt_point(p: [f64; 2]) -> String {
+    format!("({}, {})", fmt_num(p[0]), fmt_num(p[1]))
+}
+
+fn fmt_feature(f: FeatureRef) -> String {
+    format!("{} {}", f.kind, f.index)
+}
+
+impl Report {
+    /// The readable table printed by `polydist run`: one line per pair and effect (per-frame effects
+    /// summarised by their minimum over the frames), then the costs.
+    #[must_use]
+    pub fn to_table(&self) -> String {
+        let mut s = String::new();
+        let t = &self.time;
+        let _ = writeln!(
+            s,
+            "scene {}: kernel {}, t = {} .. {} step {} ({} frame{}), temporal coherence {}",
+            self.scene,
+            self.kernel,
+            fmt_num(t.start),
+            fmt_num(t.end),
+            fmt_num(t.step),
+            t.frames,
+            if t.frames == 1 { "" } else { "s" },
+            if self.coherence { "on" } else { "off" }
+        );
+        let mut rows: Vec<[String; 3]> = Vec::new();
+        for p in &self.pairs {
+            let pair = format!("{} – {}", p.a, p.b);
+            for line in pair_lines(p) {
+                rows.push([pair.clone(), line.0, line.1]);
+            }
+        }
+        let w0 = rows
+            .iter()
+            .map(|r| r[0].chars().count())
+            .max()
+            .unwrap_or(4)
+            .max(4);
+        let w1 = rows
+            .iter()
+            .map(|r| r[1].chars().count())
+            .max()
+            .unwrap_or(6)
+            .max(6);
+        let _ = writeln!(s, "\n{:<w0$}  {:<w1$}  result", "pair", "effect");
+        for r in &rows {
+            let _ = writeln!(s, "{:<w0$}  {:<w1$}  {}", r[0], r[1], r[2]);
+        }
+        let c = &self.costs;
+        let _ = writeln!(
+            s,
+            "\n{:<16} {:>10} {:>12} {:>10}",
+            "cost", "calls", "predicates", "µs"
+        );
+        let mut cost = |name: &str, k: &Cost| {
+            let pred = k.predicates.map_or("-".to_owned(), |p| p.to_string());
+            let _ = writeln!(
+                s,
+                "{name:<16} {:>10} {:>12} {:>10}",
+                k.calls, pred, k.micros
+            );
+        };
+        cost("pose", &c.pose);
+        cost("distance", &c.distance);
+        cost("vertex_distance", &c.vertex_distance);
+        cost("first_contact", &c.first_contact);
+        let _ = writeln!(
+            s,
+            "({} distance queries started from a hint; first_contact: {} steps, {} intersection tests)",
+            c.distance_hinted, c.first_contact_steps, c.first_contact_intersection_tests
+        );
+        if self.failed {
+            let _ = writeln!(s, "\nSOME PAIRS FAILED (see above)");
+        }
+        s
+    }
+}
+
+/// The table lines of one pair: (effect, result).
+fn pair_lines(p: &PairReport) -> Vec<(String, String)> {
+    let mut out = Vec::new();
+    let frames = &p.frames;
+    let when = |f: &FrameResult| {
+        if p.moving {
+            format!(" at t = {}", fmt_num(f.t))
+        } else {
+            " (static pair, evaluated once)".to_owned()
+        }
+    };
+    let invalid: Vec<&FrameResult> = frames.iter().filter(|f| f.error.is_some()).collect();
+    if let Some(f) = invalid.first() {
+        out.push((
+            "error".to_owned(),
+            format!(
+                "{} invalid frame(s); first at t = {}: {}",
+                invalid.len(),
+                fmt_num(f.t),
+                f.error.as_deref().unwrap_or_default()
+            ),
+        ));
+    }
+    let by_distance = frames
+        .iter()
+        .filter(|f| f.distance.is_some())
+        .min_by(|x, y| {
+            x.distance
+                .unwrap_or(0.0)
+                .total_cmp(&y.distance.unwrap_or(0.0))
+        });
+    if let Some(f) = by_distance {
+        let status = f.status.map_or("", |s| match s {
+            Status::Disjoint => "",
+            Status::Touching => " (touching)",
+            Status::Overlapping => " (overlapping)",
+            Status::Invalid => "",
+        });
+        let label = if p.moving { "min " } else { "" };
+        out.push((
+            "distance".to_owned(),
+            format!(
+                "{label}{}{status}{}",
+                fmt_num(f.distance.unwrap_or(0.0)),
+                when(f)
+            ),
+        ));
+    }
+    if p.effects.contains(&"closest_points") {
+        let chosen = by_distance.or_else(|| frames.iter().find(|f| f.error.is_none()));
+        if let Some(f) = chosen {
+            let text = match f.closest_points {
+                Some(c) => format!(
+                    "{} on {} – {} on {}{}",
+                    fmt_point(c.point_a),
+                    fmt_feature(c.feature_a),
+                    fmt_point(c.point_b),
+                    fmt_feature(c.feature_b),
+                    when(f)
+                ),
+                None => format!("none: the bodies overlap{}", when(f)),
+            };
+            out.push(("closest_points".to_owned(), text));
+        }
+    }
+    let by_vertex = frames
+        .iter()
+        .filter_map(|f| f.vertex_distance.map(|v| (f, v)))
+        .min_by(|x, y| x.1.distance.total_cmp(&y.1.distance));
+    if let Some((f, v)) = by_vertex {
+        out.push((
+            "vertex_distance".to_owned(),
+            format!(
+                "{}{} (vertex {} – vertex {}){}",
+                if p.moving { "min " } else { "" },
+                fmt_num(v.distance),
+                v.vertex_a,
+                v.vertex_b,
+                when(f)
+            ),
+        ));
+    }
+    if let Some(c) = &p.first_contact {
+        let text = match c.outcome {
+            ContactOutcome::Contact => format!(
+                "first contact in ({}, {}]",
+                fmt_num(c.t_safe.unwrap_or(f64::NAN)),
+                fmt_num(c.t_hit.unwrap_or(f64::NAN))
+            ),
+            ContactOutcome::ContactAtStart => format!(
+                "in contact at the start, t = {}",
+                fmt_num(c.t_hit.unwrap_or(f64::NAN))
+            ),
+            ContactOutcome::Apart => format!(
+                "apart over the whole span, clearance ≥ {}",
+                fmt_num(c.clearance_lower_bound.unwrap_or(0.0))
+            ),
+            ContactOutcome::Undecided => format!(
+                "UNDECIDED: apart until t = {} ({})",
+                fmt_num(c.t_safe.unwrap_or(f64::NAN)),
+                c.message.as_deref().unwrap_or_default()
+            ),
+            ContactOutcome::Invalid => {
+                format!("INVALID: {}", c.message.as_deref().unwrap_or_default())
+            }
+        };
+        out.push((
+            "first_contact".to_owned(),
+            format!("{text} [{} steps]", c.steps),
+        ));
+    }
+    out
+}
