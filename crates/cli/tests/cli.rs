@@ -555,7 +555,7 @@ fn check_explains_every_problem() {
     let bad = dir.join("bad.toml");
     std::fs::write(
         &bad,
-        "[[body]]\nid = \"a\"\nvertices = [[0, 0], [2, 0], [1, 0.5], [2, 2], [0, 2]]\nkind = \"convex\"\n[[query]]\npairs = [[\"a\", \"ghost\"]]\neffects = [\"hausdorff\"]\n",
+        "[[body]]\nid = \"a\"\nvertices = [[0, 0], [2, 0], [1, 0.5], [2, 2], [0, 2]]\nkind = \"convex\"\n[[query]]\npairs = [[\"a\", \"ghost\"]]\neffects = [\"separation\"]\n",
     )
     .unwrap();
     let (code, _, err) = run(&["check", bad.to_str().unwrap()]);
@@ -566,7 +566,7 @@ fn check_explains_every_problem() {
         "{err}"
     );
     assert!(
-        err.contains("ghost") && err.contains("`hausdorff`"),
+        err.contains("ghost") && err.contains("`separation`"),
         "{err}"
     );
     let syntax = dir.join("syntax.toml");

@@ -15,10 +15,11 @@
 //!   `distance` and `closest_points` share one convex distance query (Yang 2006, `O(log n + log m)`,
 //!   with temporal coherence), `vertex_distance` is McKenna–Toussaint (`O(n + m)`), `first_contact`
 //!   is conservative advancement (Schwartz 1981) with a bracket confirmed by the exact intersection
-//!   test or a certified clearance; the [`Report`] says what each effect computed and what it cost.
+//!   test or a certified clearance, `hausdorff` and `cmmr` are Atallah–Ribeiro–Lifschitz (`O(n + m)`);
+//!   the [`Report`] says what each effect computed and what it cost.
 //!
-//! `hausdorff`, `cmmr` and `separation` are parsed but refused by the loader with
-//! [`SceneError::EffectNotYetAvailable`] until their algorithms are wired in; every effect of this
+//! `separation` is parsed but refused by the loader with
+//! [`SceneError::EffectNotYetAvailable`] until its algorithm is wired in; every effect of this
 //! version needs convex bodies ([`SceneError::NeedsConvex`]).
 //!
 //! # Numbers

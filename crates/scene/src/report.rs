@@ -121,6 +121,40 @@ pub struct ClosestPoints {
     pub parallel: bool,
 }
 
+/// One directed Hausdorff distance `h(from, to)` of the filled bodies: the realizing vertex of `from`
+/// (an exact argmax) and its nearest point on `to`.
+#[derive(Clone, Copy, Debug, Serialize, PartialEq)]
+pub struct DirectedHausdorff {
+    /// The directed distance.
+    pub distance: f64,
+    /// Its square.
+    pub squared_distance: f64,
+    /// The realizing vertex of `from` (caller index).
+    pub vertex: usize,
+    /// The vertex (world frame).
+    pub point: [f64; 2],
+    /// Its nearest point on filled `to` (world frame; the vertex itself when inside).
+    pub projection: [f64; 2],
+    /// The feature of `to` holding `projection`; absent when the vertex is strictly inside `to`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub feature: Option<FeatureRef>,
+}
+
+/// The `hausdorff` effect at one frame (Atallah–Ribeiro–Lifschitz, linear time).
+#[derive(Clone, Copy, Debug, Serialize, PartialEq)]
+pub struct HausdorffResult {
+    /// `max(h(a, b), h(b, a))`.
+    pub distance: f64,
+    /// Its square.
+    pub squared_distance: f64,
+    /// `"a_to_b"` or `"b_to_a"`: which directed distance is the larger (`a_to_b` on exact ties).
+    pub direction: &'static str,
+    /// `h(a, b)`.
+    pub a_to_b: DirectedHausdorff,
+    /// `h(b, a)`.
+    pub b_to_a: DirectedHausdorff,
+}
+
 /// The `vertex_distance` effect at one frame.
 #[derive(Clone, Copy, Debug, Serialize, PartialEq)]
 pub struct VertexDistanceResult {
@@ -154,6 +188,13 @@ pub struct FrameResult {
     /// When `vertex_distance` was asked.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub vertex_distance: Option<VertexDistanceResult>,
+    /// When `hausdorff` was asked.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub hausdorff: Option<HausdorffResult>,
+    /// When `cmmr` was asked: the sum over the vertices of each body of the squared distance to the
+    /// other filled body (compensated sum of exactly chosen terms).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub cmmr: Option<f64>,
     /// Why the frame could not be evaluated (`status` is `invalid`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub error: Option<String>,
@@ -227,6 +268,10 @@ pub struct Costs {
     pub distance_hinted: u64,
     /// Minimum vertex distance queries (McKenna–Toussaint).
     pub vertex_distance: Cost,
+    /// Hausdorff distance queries (Atallah–Ribeiro–Lifschitz).
+    pub hausdorff: Cost,
+    /// CMMR distance queries (Atallah–Ribeiro–Lifschitz).
+    pub cmmr: Cost,
     /// `first_contact`: `calls` are pairs; their distance queries and probes are counted here (not in
     /// `distance`).
     pub first_contact: Cost,
@@ -313,6 +358,8 @@ impl Report {
         cost("pose", &c.pose);
         cost("distance", &c.distance);
         cost("vertex_distance", &c.vertex_distance);
+        cost("hausdorff", &c.hausdorff);
+        cost("cmmr", &c.cmmr);
         cost("first_contact", &c.first_contact);
         let _ = writeln!(
             s,
@@ -404,6 +451,45 @@ fn pair_lines(p: &PairReport) -> Vec<(String, String)> {
                 fmt_num(v.distance),
                 v.vertex_a,
                 v.vertex_b,
+                when(f)
+            ),
+        ));
+    }
+    let by_hausdorff = frames
+        .iter()
+        .filter_map(|f| f.hausdorff.map(|h| (f, h)))
+        .max_by(|x, y| x.1.distance.total_cmp(&y.1.distance));
+    if let Some((f, h)) = by_hausdorff {
+        let d = if h.direction == "a_to_b" {
+            h.a_to_b
+        } else {
+            h.b_to_a
+        };
+        out.push((
+            "hausdorff".to_owned(),
+            format!(
+                "{}{} ({}: vertex {} at {} – {}){}",
+                if p.moving { "max " } else { "" },
+                fmt_num(h.distance),
+                h.direction,
+                d.vertex,
+                fmt_point(d.point),
+                fmt_point(d.projection),
+                when(f)
+            ),
+        ));
+    }
+    let by_cmmr = frames
+        .iter()
+        .filter_map(|f| f.cmmr.map(|c| (f, c)))
+        .max_by(|x, y| x.1.total_cmp(&y.1));
+    if let Some((f, c)) = by_cmmr {
+        out.push((
+            "cmmr".to_owned(),
+            format!(
+                "{}{}{}",
+                if p.moving { "max " } else { "" },
+                fmt_num(c),
                 when(f)
             ),
         ));

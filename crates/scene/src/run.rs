@@ -35,7 +35,8 @@ use std::time::Instant;
 
 use glam::DVec2;
 use polydist_convex::{
-    Hint, Pose, Separation, distance_with, distance_with_hint, intersects, min_vertex_distance_with,
+    Direction, Hint, Pose, Separation, VertexToPolygon, cmmr_value_with, distance_with,
+    distance_with_hint, hausdorff_with, intersects, min_vertex_distance_with,
 };
 use polydist_polygon::predicates::{Counted, Exact, Fast, Kernel, Robust, predicate_counts};
 use polydist_polygon::{ConvexPolygon, Feature, PolygonError};
@@ -43,8 +44,8 @@ use polydist_polygon::{ConvexPolygon, Feature, PolygonError};
 use crate::load::{Body, ContactParams, Scene, Shape};
 use crate::motion::{Motion, down, pose_error, relative_speed_bound, up};
 use crate::report::{
-    ClosestPoints, ContactOutcome, ContactResult, Cost, Costs, FrameResult, PairReport, Report,
-    Status, TimeReport, VertexDistanceResult,
+    ClosestPoints, ContactOutcome, ContactResult, Cost, Costs, DirectedHausdorff, FrameResult,
+    HausdorffResult, PairReport, Report, Status, TimeReport, VertexDistanceResult,
 };
 use crate::spec::{Effect, EffectSet, KernelChoice};
 
@@ -73,6 +74,8 @@ impl PairJob {
             Effect::Distance,
             Effect::ClosestPoints,
             Effect::VertexDistance,
+            Effect::Hausdorff,
+            Effect::Cmmr,
         ]
         .into_iter()
         .any(|e| self.effects.contains(e))
@@ -288,6 +291,8 @@ fn run_with<K: Kernel>(scene: &Scene, options: &RunOptions, kernel: KernelChoice
                     squared_distance: None,
                     closest_points: None,
                     vertex_distance: None,
+                    hausdorff: None,
+                    cmmr: None,
                     error: Some(e.clone()),
                 },
             };
@@ -443,6 +448,8 @@ fn eval_frame<K: Kernel>(
         squared_distance: None,
         closest_points: None,
         vertex_distance: None,
+        hausdorff: None,
+        cmmr: None,
         error: None,
     };
     let (Shape::Convex(poly_a), Shape::Convex(poly_b)) = (&ba.shape, &bb.shape) else {
@@ -513,6 +520,37 @@ fn eval_frame<K: Kernel>(
             vertex_a: poly_a.source_index(v.vertex_p),
             vertex_b: poly_b.source_index(v.vertex_q),
         });
+    }
+    if job.effects.contains(Effect::Hausdorff) {
+        let h = meter.measure(&mut costs.hausdorff, || {
+            hausdorff_with::<K>(&pa.poly, &pb.poly)
+        });
+        let directed = |from: &ConvexPolygon, to: &ConvexPolygon, to_pose, d: VertexToPolygon| {
+            DirectedHausdorff {
+                distance: d.distance,
+                squared_distance: d.squared_distance,
+                vertex: from.source_index(d.vertex),
+                point: d.point.to_array(),
+                projection: d.projection.to_array(),
+                feature: d
+                    .feature
+                    .map(|f| caller_feature::<K>(to, to_pose, f, d.point).into()),
+            }
+        };
+        out.hausdorff = Some(HausdorffResult {
+            distance: h.distance,
+            squared_distance: h.squared_distance,
+            direction: match h.direction {
+                Direction::PToQ => "a_to_b",
+                Direction::QToP => "b_to_a",
+            },
+            a_to_b: directed(poly_a, poly_b, pb.pose, h.p_to_q),
+            b_to_a: directed(poly_b, poly_a, pa.pose, h.q_to_p),
+        });
+    }
+    if job.effects.contains(Effect::Cmmr) {
+        out.cmmr =
+            Some(meter.measure(&mut costs.cmmr, || cmmr_value_with::<K>(&pa.poly, &pb.poly)));
     }
     out
 }

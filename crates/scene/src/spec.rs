@@ -288,9 +288,9 @@ pub enum Effect {
     ClosestPoints,
     /// The minimum vertex distance per frame (convex pairs, McKenna–Toussaint).
     VertexDistance,
-    /// Directed and symmetric Hausdorff distances (not yet available).
+    /// Directed and symmetric Hausdorff distances of the filled bodies (convex bodies).
     Hausdorff,
-    /// The CMMR distance (not yet available).
+    /// The CMMR distance of the filled bodies (convex bodies).
     Cmmr,
     /// The separation of simple polygons (not yet available).
     Separation,
@@ -324,11 +324,11 @@ impl Effect {
         }
     }
 
-    /// Whether this build of the runner computes the effect (`hausdorff`, `cmmr` and `separation`
-    /// arrive with their algorithms).
+    /// Whether this build of the runner computes the effect (`separation` arrives with its
+    /// algorithm).
     #[must_use]
     pub fn is_available(self) -> bool {
-        !matches!(self, Effect::Hausdorff | Effect::Cmmr | Effect::Separation)
+        !matches!(self, Effect::Separation)
     }
 
     fn bit(self) -> u8 {

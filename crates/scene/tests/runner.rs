@@ -318,6 +318,7 @@ fn only_first_contact_does_no_other_work() {
     let report = run_default(&s);
     let c = report.costs;
     assert_eq!(c.vertex_distance.calls, 0);
+    assert_eq!((c.hausdorff.calls, c.cmmr.calls), (0, 0));
     assert_eq!(c.distance.calls, 0);
     assert_eq!(
         c.pose.calls, 0,
@@ -339,6 +340,66 @@ fn only_first_contact_does_no_other_work() {
     assert_eq!(report.costs.distance.calls, 0);
     assert_eq!(report.costs.first_contact.calls, 0);
     let _ = search_stats();
+}
+
+/// `hausdorff` and `cmmr` at every frame of a moving pair equal the brute-force twins on the posed
+/// polygons the runner used (recomputed here from the pose), and cost exactly one query each per frame.
+#[test]
+fn hausdorff_and_cmmr_match_the_brute_force_per_frame() {
+    use glam::DVec2;
+    use polydist_convex::polygon::ConvexPolygon;
+    use polydist_convex::polygon::predicates::Robust;
+    use polydist_convex::{cmmr_brute, hausdorff_brute};
+    let text = format!(
+        r#"
+        time = {{ end = 2.0, step = 0.25 }}
+        [[body]]
+        id = "a"
+        vertices = {}
+        motion = {{ type = "linear", velocity = [1.5, 0.25] }}
+        [[body]]
+        id = "b"
+        vertices = [[1.0, -1.0], [4.0, 0.0], [3.0, 2.5], [0.5, 1.5]]
+        [[query]]
+        pairs = [["a", "b"]]
+        effects = ["hausdorff", "cmmr"]
+        "#,
+        square(-2.0, 0.0, 1.0)
+    );
+    let report = run_default(&scene(&text));
+    assert_eq!(report.costs.hausdorff.calls, 9);
+    assert_eq!(report.costs.cmmr.calls, 9);
+    assert_eq!(report.costs.distance.calls, 0);
+    let b = ConvexPolygon::try_new(&[
+        DVec2::new(1.0, -1.0),
+        DVec2::new(4.0, 0.0),
+        DVec2::new(3.0, 2.5),
+        DVec2::new(0.5, 1.5),
+    ])
+    .expect("valid");
+    let frames = &report.pairs[0].frames;
+    assert_eq!(frames.len(), 9);
+    let mut overlapping = 0;
+    for f in frames {
+        // The runner's pose: a translation by t·v, rounded per coordinate.
+        let (dx, dy) = (1.5 * f.t, 0.25 * f.t);
+        let a: Vec<DVec2> = [(-2.0, 0.0), (-1.0, 0.0), (-1.0, 1.0), (-2.0, 1.0)]
+            .iter()
+            .map(|&(x, y)| DVec2::new(x + dx, y + dy))
+            .collect();
+        let a = ConvexPolygon::try_new(&a).expect("valid");
+        let h = f.hausdorff.expect("hausdorff asked");
+        let want = hausdorff_brute::<Robust>(&a, &b);
+        assert_eq!(h.distance, want.distance, "t = {}", f.t);
+        assert_eq!(h.squared_distance, want.squared_distance);
+        assert_eq!(h.a_to_b.distance, want.p_to_q.distance);
+        assert_eq!(h.b_to_a.distance, want.q_to_p.distance);
+        let c = f.cmmr.expect("cmmr asked");
+        assert_eq!(c, cmmr_brute::<Robust>(&a, &b).value, "t = {}", f.t);
+        overlapping += usize::from(h.a_to_b.feature.is_none());
+    }
+    // The square moves into b: some frames have a vertex of a inside b.
+    assert!(overlapping > 0);
 }
 
 /// distance and closest_points share one query per pair and frame; a static pair is evaluated once.
