@@ -1,0 +1,113 @@
+//! The wedges `W(p)` by two hull scans (tangents, not visibility), Lemma 3's `α(p) ≥ 90°` test, and
+//! wedge membership.
+
+use core::cmp::Ordering;
+
+use glam::DVec2;
+use polydist_predicates::{Kernel, Sign};
+
+use crate::chain::Prepared;
+use crate::frame::Frame;
+
+/// A vertex that survived Lemmas 2 and 3, with the points its wedge's rays pass through
+/// (`None`: the ray is parallel to the line, `p^± = ±∞`).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Apex {
+    pub(crate) pt: DVec2,
+    /// The caller's index.
+    pub(crate) idx: usize,
+    /// `h(p)`: the upper ray of `W(p)` passes through it.
+    pub(crate) hi: Option<DVec2>,
+    /// `l(p)`: the lower ray of `W(p)` passes through it.
+    pub(crate) lo: Option<DVec2>,
+}
+
+/// `h(p_i)` for every vertex of a chain strictly increasing in height: the point above `p_i` whose
+/// direction from `p_i` makes the smallest angle with the direction toward the line, when that
+/// angle is below 90° (else `None`). One top-to-bottom scan keeping the line-facing hull of the
+/// vertices above as a stack (Andrew's monotone chain); collinear points are popped so the farthest
+/// tangent point is kept. Every vertex is pushed and popped at most once: at most `2n` orientation
+/// tests and `n` depth tests.
+pub(crate) fn upper_tangents<K: Kernel>(pts: &[DVec2], frame: Frame) -> Vec<Option<usize>> {
+    tangents::<K>(pts, frame, true)
+}
+
+/// `l(p_i)`, the mirror image of [`upper_tangents`] (bottom-to-top scan).
+pub(crate) fn lower_tangents<K: Kernel>(pts: &[DVec2], frame: Frame) -> Vec<Option<usize>> {
+    tangents::<K>(pts, frame, false)
+}
+
+fn tangents<K: Kernel>(pts: &[DVec2], frame: Frame, upper: bool) -> Vec<Option<usize>> {
+    let n = pts.len();
+    let mut out = vec![None; n];
+    let mut stack: Vec<usize> = Vec::with_capacity(n);
+    // Going down, a candidate further along the hull wins when it is counter-clockwise (or collinear,
+    // hence farther) of the current one as seen from the new point; going up, when it is clockwise.
+    let stop_on = if upper {
+        Sign::Negative
+    } else {
+        Sign::Positive
+    };
+    let mut visit = |i: usize| {
+        let p = pts[i];
+        while let [.., c2, c1] = stack[..] {
+            if frame.orient::<K>(p, pts[c1], pts[c2]) != stop_on {
+                stack.pop();
+            } else {
+                break;
+            }
+        }
+        if let Some(&t) = stack.last() {
+            if frame.cmp_depth::<K>(pts[t], p) == Ordering::Less {
+                out[i] = Some(t);
+            }
+        }
+        stack.push(i);
+    };
+    if upper {
+        (0..n).rev().for_each(&mut visit);
+    } else {
+        (0..n).for_each(&mut visit);
+    }
+    out
+}
+
+/// Lemmas 2–3: the wedges of a prepared chain and the vertices with `α(p) ≥ 90°`, i.e.
+/// `(h − p)·(l − p) ≤ 0` (one degree-2 dot sign; `α ≥ 90°` when a ray is parallel to the line).
+/// The wedges are those of the whole prepared chain. `O(n)`.
+pub(crate) fn apexes<K: Kernel>(prep: &Prepared, frame: Frame) -> Vec<Apex> {
+    let hi = upper_tangents::<K>(&prep.pts, frame);
+    let lo = lower_tangents::<K>(&prep.pts, frame);
+    let mut out = Vec::with_capacity(prep.pts.len());
+    for (i, &pt) in prep.pts.iter().enumerate() {
+        let (h, l) = (hi[i].map(|k| prep.pts[k]), lo[i].map(|k| prep.pts[k]));
+        let keep = match (h, l) {
+            (Some(h), Some(l)) => K::dot_sign(pt, h, pt, l) != Sign::Positive,
+            _ => true,
+        };
+        if keep {
+            out.push(Apex {
+                pt,
+                idx: prep.idx[i],
+                hi: h,
+                lo: l,
+            });
+        }
+    }
+    out
+}
+
+/// `z ∈ W(a)`: `z` strictly inside the open wedge at `a` (frame of `a`'s chain), strictly below the
+/// upper ray and strictly above the lower ray. Two degree-2 tests.
+#[inline]
+pub(crate) fn in_wedge<K: Kernel>(frame: Frame, a: &Apex, z: DVec2) -> bool {
+    let below_upper = match a.hi {
+        Some(h) => frame.orient::<K>(a.pt, h, z) == Sign::Positive,
+        None => frame.cmp_depth::<K>(z, a.pt) == Ordering::Less,
+    };
+    below_upper
+        && match a.lo {
+            Some(l) => frame.orient::<K>(a.pt, l, z) == Sign::Negative,
+            None => frame.cmp_depth::<K>(z, a.pt) == Ordering::Less,
+        }
+}
