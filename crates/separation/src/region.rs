@@ -106,3 +106,85 @@ pub(crate) fn place<K: Kernel>(fu: Frame, b: DVec2, r: &Region, z: DVec2) -> Pla
     };
     if below { Place::Below } else { Place::Inside }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::chain::{prepare_monotone, validate};
+    use crate::error::Chain;
+    use crate::wedge::apexes;
+    use polydist_oracle::SplitMix64;
+    use polydist_predicates::Exact;
+
+    fn side(rng: &mut SplitMix64, n: usize, sign: f64) -> Vec<DVec2> {
+        let mut ys: Vec<i64> = (0..n).map(|_| rng.range_i64(0, 3 * n as i64)).collect();
+        ys.sort_unstable();
+        ys.dedup();
+        ys.into_iter()
+            .map(|y| DVec2::new(sign * rng.range_i64(1, 7) as f64, y as f64))
+            .collect()
+    }
+
+    /// The definition of `u^+`, scanned in `O(n_b · n_u)`: from the top, the highest admissible `u`
+    /// between `H(b_j)` and the cap `H(u_{j+1}^+)` (or `H(b_{j+1})` when there was none).
+    fn up_def(bs: &[Apex], fb: Frame, us: &[Apex], fu: Frame) -> Vec<Option<DVec2>> {
+        let mut out = vec![None; bs.len()];
+        let mut cap: Option<DVec2> = None;
+        for (j, b) in bs.iter().enumerate().rev() {
+            let best = us
+                .iter()
+                .filter(|u| fb.cmp_height::<Exact>(u.pt, b.pt) != Ordering::Less)
+                .filter(|u| {
+                    cap.is_none_or(|c| fb.cmp_height::<Exact>(u.pt, c) != Ordering::Greater)
+                })
+                .filter(|u| in_wedge::<Exact>(fb, b, u.pt) && in_wedge::<Exact>(fu, u, b.pt))
+                .max_by(|x, y| fb.cmp_height::<Exact>(x.pt, y.pt));
+            out[j] = best.map(|u| u.pt);
+            cap = Some(best.map_or(b.pt, |u| u.pt));
+        }
+        out
+    }
+
+    fn down_def(bs: &[Apex], fb: Frame, us: &[Apex], fu: Frame) -> Vec<Option<DVec2>> {
+        let mut out = vec![None; bs.len()];
+        let mut cap: Option<DVec2> = None;
+        for (j, b) in bs.iter().enumerate() {
+            let best = us
+                .iter()
+                .filter(|u| fb.cmp_height::<Exact>(u.pt, b.pt) != Ordering::Greater)
+                .filter(|u| cap.is_none_or(|c| fb.cmp_height::<Exact>(u.pt, c) != Ordering::Less))
+                .filter(|u| in_wedge::<Exact>(fb, b, u.pt) && in_wedge::<Exact>(fu, u, b.pt))
+                .min_by(|x, y| fb.cmp_height::<Exact>(x.pt, y.pt));
+            out[j] = best.map(|u| u.pt);
+            cap = Some(best.map_or(b.pt, |u| u.pt));
+        }
+        out
+    }
+
+    #[test]
+    fn pointer_scans_match_the_definition() {
+        let mut rng = SplitMix64::new(21);
+        let (a, b) = (DVec2::ZERO, DVec2::Y);
+        let mut found = 0;
+        for n in [1usize, 2, 4, 7, 12, 25] {
+            for _ in 0..300 {
+                let p = side(&mut rng, n, 1.0);
+                let q = side(&mut rng, n, -1.0);
+                let f = validate::<Exact>(&p, &q, a, b).unwrap();
+                let pa =
+                    apexes::<Exact>(&prepare_monotone::<Exact>(&p, f.p, Chain::P).unwrap(), f.p);
+                let qa =
+                    apexes::<Exact>(&prepare_monotone::<Exact>(&q, f.q, Chain::Q).unwrap(), f.q);
+                for (bs, fb, us, fu) in [(&pa, f.p, &qa, f.q), (&qa, f.q, &pa, f.p)] {
+                    let r = regions::<Exact>(bs, fb, us, fu);
+                    let up: Vec<_> = r.iter().map(|r| r.up).collect();
+                    let down: Vec<_> = r.iter().map(|r| r.down).collect();
+                    assert_eq!(up, up_def(bs, fb, us, fu), "u+ for {p:?} {q:?}");
+                    assert_eq!(down, down_def(bs, fb, us, fu), "u- for {p:?} {q:?}");
+                    found += up.iter().chain(&down).filter(|u| u.is_some()).count();
+                }
+            }
+        }
+        assert!(found > 1000, "the generator must produce regions ({found})");
+    }
+}

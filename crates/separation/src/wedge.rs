@@ -111,3 +111,128 @@ pub(crate) fn in_wedge<K: Kernel>(frame: Frame, a: &Apex, z: DVec2) -> bool {
             None => frame.cmp_depth::<K>(z, a.pt) == Ordering::Less,
         }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use polydist_oracle::SplitMix64;
+    use polydist_predicates::Exact;
+
+    /// A random chain strictly increasing in height (frame = plain coordinates, line x = 0, P side
+    /// x ≥ 0), integer coordinates so ties are frequent.
+    fn chain(rng: &mut SplitMix64, n: usize) -> Vec<DVec2> {
+        let mut ys: Vec<i64> = (0..n).map(|_| rng.range_i64(0, 3 * n as i64)).collect();
+        ys.sort_unstable();
+        ys.dedup();
+        ys.into_iter()
+            .map(|y| DVec2::new(rng.range_i64(0, 8) as f64, y as f64))
+            .collect()
+    }
+
+    const P: Frame = Frame {
+        l0: DVec2::ZERO,
+        l1: DVec2::new(0.0, 1.0), // P = x ≥ 0 is on the right of this direction
+        mirror: false,
+    };
+
+    /// The O(n²) definition of `h(p_i)`: the point above with the largest polar angle, the farthest
+    /// on ties, kept only when strictly nearer to the line.
+    fn upper_def(pts: &[DVec2], i: usize) -> Option<usize> {
+        let p = pts[i];
+        let mut best: Option<usize> = None;
+        for j in i + 1..pts.len() {
+            best = match best {
+                None => Some(j),
+                Some(b) => match Exact::orient(p, pts[b], pts[j]).sign() {
+                    Sign::Positive => Some(j),
+                    Sign::Zero if (pts[j] - p).length_squared() > (pts[b] - p).length_squared() => {
+                        Some(j)
+                    }
+                    _ => Some(b),
+                },
+            };
+        }
+        best.filter(|&b| pts[b].x < p.x)
+    }
+
+    fn lower_def(pts: &[DVec2], i: usize) -> Option<usize> {
+        let p = pts[i];
+        let mut best: Option<usize> = None;
+        for j in 0..i {
+            best = match best {
+                None => Some(j),
+                Some(b) => match Exact::orient(p, pts[b], pts[j]).sign() {
+                    Sign::Negative => Some(j),
+                    Sign::Zero if (pts[j] - p).length_squared() > (pts[b] - p).length_squared() => {
+                        Some(j)
+                    }
+                    _ => Some(b),
+                },
+            };
+        }
+        best.filter(|&b| pts[b].x < p.x)
+    }
+
+    #[test]
+    fn frame_matches_plain_coordinates() {
+        let (a, b) = (DVec2::new(3.0, 1.0), DVec2::new(1.0, 2.0));
+        assert_eq!(P.cmp_depth::<Exact>(a, b), Ordering::Greater);
+        assert_eq!(P.cmp_height::<Exact>(a, b), Ordering::Less);
+        assert_eq!(P.depth_sign::<Exact>(a), Sign::Positive);
+        assert_eq!(P.depth_sign::<Exact>(DVec2::new(-1.0, 0.0)), Sign::Negative);
+    }
+
+    #[test]
+    fn hull_scans_match_the_definition() {
+        let mut rng = SplitMix64::new(11);
+        for n in [1usize, 2, 3, 5, 8, 13, 30, 60] {
+            for _ in 0..200 {
+                let pts = chain(&mut rng, n);
+                let up = upper_tangents::<Exact>(&pts, P);
+                let lo = lower_tangents::<Exact>(&pts, P);
+                for i in 0..pts.len() {
+                    assert_eq!(up[i], upper_def(&pts, i), "upper {i} of {pts:?}");
+                    assert_eq!(lo[i], lower_def(&pts, i), "lower {i} of {pts:?}");
+                }
+            }
+        }
+    }
+
+    /// Lemma 3 as dominance: every vertex dropped for `α < 90°` is strictly farther from every point
+    /// on the other side of the line (sampled on a grid, including the line) than `h` or `l`.
+    #[test]
+    fn pruned_vertices_are_strictly_dominated() {
+        let mut rng = SplitMix64::new(12);
+        let mut pruned = 0;
+        for n in [3usize, 6, 12, 25] {
+            for _ in 0..150 {
+                let pts = chain(&mut rng, n);
+                let prep = Prepared {
+                    idx: (0..pts.len()).collect(),
+                    pts: pts.clone(),
+                };
+                let kept: Vec<usize> = apexes::<Exact>(&prep, P).iter().map(|a| a.idx).collect();
+                let up = upper_tangents::<Exact>(&pts, P);
+                let lo = lower_tangents::<Exact>(&pts, P);
+                for i in (0..pts.len()).filter(|i| !kept.contains(i)) {
+                    pruned += 1;
+                    let (h, l) = (pts[up[i].unwrap()], pts[lo[i].unwrap()]);
+                    for qx in -6..=0 {
+                        for qy in -4..3 * n as i64 + 4 {
+                            let q = DVec2::new(qx as f64, qy as f64);
+                            assert!(
+                                Exact::cmp_dist(q, h, pts[i]) == Ordering::Less
+                                    || Exact::cmp_dist(q, l, pts[i]) == Ordering::Less,
+                                "vertex {i} of {pts:?} not dominated at {q}"
+                            );
+                        }
+                    }
+                }
+            }
+        }
+        assert!(
+            pruned > 100,
+            "the generator must exercise Lemma 3 ({pruned})"
+        );
+    }
+}

@@ -4,12 +4,13 @@
 mod common;
 
 use common::{Case, collinear, combs, random_case};
+use monotone_minima::Matrix;
 use monotone_minima::{brute_force_row_minima_by, check_totally_monotone_by, row_minima_by};
 use polydist_oracle::{SplitMix64, sq_dist_pp};
 use polydist_polygon::Feature;
 use polydist_predicates::{Exact, Kernel, Robust};
 use polydist_separation::{
-    ClosestPair, CvvMatrix, closest_visible_vertices, closest_visible_vertices_brute,
+    ClosestPair, CvvMatrix, MatrixEntry, closest_visible_vertices, closest_visible_vertices_brute,
     compare_entries,
 };
 
@@ -98,4 +99,47 @@ fn collinear_runs() {
             check_case::<Robust>(&collinear(n, rot), true);
         }
     }
+}
+
+/// Lemma 5's two claims (the CVV version of Lemma 7's, with the erratum R(q_j)): down a column, a
+/// penalty stays a penalty (i), and below a distance there is no infinity (ii).
+fn check_claims(c: &Case) -> usize {
+    let m = CvvMatrix::<Robust>::new(&c.p, &c.q, c.a, c.b).unwrap();
+    let (rows, cols) = (m.rows(), m.columns());
+    let mut dists = 0;
+    for j in 0..cols {
+        let mut seen_penalty = false;
+        let mut seen_dist = false;
+        for i in 0..rows {
+            let e = m.entry(i, j);
+            match e {
+                MatrixEntry::Penalty(_) => seen_penalty = true,
+                MatrixEntry::Dist { .. } => {
+                    assert!(!seen_penalty, "{}: claim (i) fails at ({i}, {j})", c.name);
+                    seen_dist = true;
+                    dists += 1;
+                }
+                MatrixEntry::Infinity => {
+                    assert!(!seen_penalty, "{}: claim (i) fails at ({i}, {j})", c.name);
+                    assert!(!seen_dist, "{}: claim (ii) fails at ({i}, {j})", c.name);
+                }
+            }
+        }
+    }
+    dists
+}
+
+#[test]
+fn lemma5_claims_hold_on_every_matrix() {
+    let mut rng = SplitMix64::new(99);
+    let mut dists = 0;
+    for n in [2usize, 5, 10, 30] {
+        for _ in 0..200 {
+            dists += check_claims(&random_case(&mut rng, n, false));
+        }
+    }
+    for interleave in [false, true] {
+        dists += check_claims(&combs(20, 1, 1, interleave, (3, 4)));
+    }
+    assert!(dists > 1000, "matrices must hold candidates ({dists})");
 }
