@@ -14,6 +14,10 @@ use crate::frame::Frame;
 pub(crate) struct Prepared {
     pub(crate) pts: Vec<DVec2>,
     pub(crate) idx: Vec<usize>,
+    /// The caller's chain runs upward (increasing height with increasing index).
+    pub(crate) rising: bool,
+    /// The caller's index of the first vertex dropped from a run perpendicular to the line.
+    pub(crate) first_run: Option<usize>,
 }
 
 /// The two frames of a validated input: `P` right of the oriented line, `Q` left of it.
@@ -121,7 +125,10 @@ pub(crate) fn prepare_monotone<K: Kernel>(
     } else {
         (0..n).rev().collect()
     };
-    let mut out = Prepared::default();
+    let mut out = Prepared {
+        rising,
+        ..Prepared::default()
+    };
     let mut prev = order[0];
     out.pts.push(chain[prev]);
     out.idx.push(prev);
@@ -154,6 +161,9 @@ pub(crate) fn prepare_monotone<K: Kernel>(
                     });
                 }
                 run_dir = Some(dir);
+                if out.first_run.is_none() {
+                    out.first_run = Some(i);
+                }
                 // Keep the nearer of the run's vertices: the last kept one is the nearest so far.
                 if dir == Ordering::Less {
                     if let (Some(pt), Some(ix)) = (out.pts.last_mut(), out.idx.last_mut()) {

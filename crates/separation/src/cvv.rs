@@ -10,7 +10,7 @@ use monotone_minima::{Matrix, row_minima_by};
 use polydist_polygon::Feature;
 use polydist_predicates::Kernel;
 
-use crate::chain::{Frames, prepare_monotone, validate};
+use crate::chain::{Frames, Prepared, prepare_monotone, validate};
 use crate::construct::vertex_vertex;
 use crate::error::{Chain, SeparationError};
 use crate::region::{Place, Region, place, regions};
@@ -81,6 +81,17 @@ impl<K: Kernel> CvvMatrix<K> {
         let qq = prepare_monotone::<K>(q, frames.q, Chain::Q)?;
         let rows = apexes::<K>(&pp, frames.p);
         let columns = apexes::<K>(&qq, frames.q);
+        Ok(Self::from_parts(frames, &pp, &qq, rows, columns))
+    }
+
+    /// The matrix for prepared chains and their Lemma-3 survivors.
+    pub(crate) fn from_parts(
+        frames: Frames,
+        pp: &Prepared,
+        qq: &Prepared,
+        rows: Vec<Apex>,
+        columns: Vec<Apex>,
+    ) -> Self {
         let row_regions = regions::<K>(&rows, frames.p, &columns, frames.q);
         let column_regions = regions::<K>(&columns, frames.q, &rows, frames.p);
         let stats = CvvStats {
@@ -90,7 +101,7 @@ impl<K: Kernel> CvvMatrix<K> {
             q_after_lemma3: columns.len(),
             entries_evaluated: 0,
         };
-        Ok(CvvMatrix {
+        CvvMatrix {
             frames,
             rows,
             columns,
@@ -99,7 +110,40 @@ impl<K: Kernel> CvvMatrix<K> {
             lookups: Cell::new(0),
             stats,
             kernel: core::marker::PhantomData,
-        })
+        }
+    }
+
+    /// SMAWK's row minima, then the least `Dist` among them: `(row, column)`, or `None` when no
+    /// row minimum is a candidate.
+    pub(crate) fn best(&self) -> Option<(usize, usize)> {
+        let minima = row_minima_by(self, compare_entries::<K>);
+        let mut best: Option<(usize, usize, MatrixEntry)> = None;
+        for (i, &j) in minima.iter().enumerate() {
+            let e = self.entry(i, j);
+            if !matches!(e, MatrixEntry::Dist { .. }) {
+                continue;
+            }
+            if best
+                .as_ref()
+                .is_none_or(|(_, _, b)| compare_entries::<K>(&e, b) == Ordering::Less)
+            {
+                best = Some((i, j, e));
+            }
+        }
+        best.map(|(i, j, _)| (i, j))
+    }
+
+    /// The row apex `i` and column apex `j`.
+    pub(crate) fn apexes_at(&self, i: usize, j: usize) -> (&Apex, &Apex) {
+        (&self.rows[i], &self.columns[j])
+    }
+
+    /// The statistics so far (lookups included).
+    pub(crate) fn stats(&self) -> CvvStats {
+        CvvStats {
+            entries_evaluated: self.lookups.get(),
+            ..self.stats
+        }
     }
 
     /// The caller's index in `P` of row `i`.
@@ -194,29 +238,9 @@ pub fn closest_visible_vertices<K: Kernel>(
     b: DVec2,
 ) -> Result<Cvv, SeparationError> {
     let m = CvvMatrix::<K>::new(p, q, a, b)?;
-    let minima = row_minima_by(&m, compare_entries::<K>);
-    let mut best: Option<(usize, usize, MatrixEntry)> = None;
-    for (i, &j) in minima.iter().enumerate() {
-        let e = m.entry(i, j);
-        if !matches!(e, MatrixEntry::Dist { .. }) {
-            continue;
-        }
-        let better = match &best {
-            None => true,
-            Some((_, _, b)) => compare_entries::<K>(&e, b) == Ordering::Less,
-        };
-        if better {
-            best = Some((i, j, e));
-        }
-    }
-    let (i, j, _) = best.ok_or(SeparationError::Inconsistent)?;
-    let mut stats = m.stats;
-    stats.entries_evaluated = m.lookups();
-    let pair = vertex_vertex(
-        m.rows[i].pt,
-        m.columns[j].pt,
-        Feature::Vertex(m.rows[i].idx),
-        Feature::Vertex(m.columns[j].idx),
-    );
+    let (i, j) = m.best().ok_or(SeparationError::Inconsistent)?;
+    let (r, c) = m.apexes_at(i, j);
+    let pair = vertex_vertex(r.pt, c.pt, Feature::Vertex(r.idx), Feature::Vertex(c.idx));
+    let stats = m.stats();
     Ok(Cvv { pair, stats })
 }

@@ -6,6 +6,8 @@ use core::cmp::Ordering;
 use glam::DVec2;
 use polydist_predicates::{Kernel, Sign};
 
+use crate::param::Affine;
+
 /// The oriented separating line `l` (through `l0`, `l1`, the chain `Q` on its left) seen from one
 /// chain.
 ///
@@ -48,5 +50,51 @@ impl Frame {
     pub(crate) fn orient<K: Kernel>(&self, a: DVec2, b: DVec2, c: DVec2) -> Sign {
         let s = K::orient(a, b, c).sign();
         if self.mirror { s.reversed() } else { s }
+    }
+}
+
+impl Frame {
+    /// `x ↦ depth(x) − depth(t)` in this frame: `±(x − t) × d`.
+    pub(crate) fn depth_minus(&self, t: DVec2) -> Affine {
+        Affine {
+            cross: true,
+            c: t,
+            v0: self.l0,
+            v1: self.l1,
+            neg: self.mirror,
+        }
+    }
+
+    /// `x ↦ H(x) − H(t)`: `(x − t) · d`.
+    pub(crate) fn height_minus(&self, t: DVec2) -> Affine {
+        Affine {
+            cross: false,
+            c: t,
+            v0: self.l0,
+            v1: self.l1,
+            neg: false,
+        }
+    }
+
+    /// `x ↦ orient(x, h, u)` in this frame: `∓(x − h) × (u − h)`.
+    pub(crate) fn orient_x_first(&self, h: DVec2, u: DVec2) -> Affine {
+        Affine {
+            cross: true,
+            c: h,
+            v0: h,
+            v1: u,
+            neg: !self.mirror,
+        }
+    }
+
+    /// `x ↦ orient(u, w, x)` in this frame: `∓(x − u) × (w − u)`.
+    pub(crate) fn orient_x_last(&self, u: DVec2, w: DVec2) -> Affine {
+        Affine {
+            cross: true,
+            c: u,
+            v0: u,
+            v1: w,
+            neg: !self.mirror,
+        }
     }
 }

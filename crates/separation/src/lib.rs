@@ -23,14 +23,20 @@
 mod brute;
 mod chain;
 mod construct;
+mod cve;
 mod cvv;
 mod error;
 mod frame;
+mod param;
+mod pieces;
 mod region;
 mod result;
+mod sigma;
 mod wedge;
 
 pub use brute::{closest_visible_vertices_brute, separation_brute};
+pub use cve::{CveMatrix, EdgeEntry, compare_edge_entries};
 pub use cvv::{CvvMatrix, MatrixEntry, closest_visible_vertices, compare_entries};
 pub use error::{Chain, SeparationError};
-pub use result::{ClosestPair, Cvv, CvvStats};
+pub use result::{ChainSeparation, ClosestPair, Cvv, CvvStats, SeparationStats};
+pub use sigma::separation_of_chains;

@@ -46,3 +46,25 @@ pub struct Cvv {
     /// Operation counts.
     pub stats: CvvStats,
 }
+
+/// Operation counts of one run of [`separation_of_chains`](crate::separation_of_chains).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct SeparationStats {
+    /// The CVV step.
+    pub cvv: CvvStats,
+    /// Edge pieces of `P` (rows of the first CVE matrix).
+    pub pieces_p: usize,
+    /// Edge pieces of `Q` (rows of the second CVE matrix).
+    pub pieces_q: usize,
+    /// Entries of the two CVE matrices evaluated by SMAWK.
+    pub cve_entries_evaluated: usize,
+}
+
+/// The separation of two chains, a realizing pair, and the work done.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ChainSeparation {
+    /// The pair; `feature_p`/`feature_q` are the caller's vertices or edges.
+    pub pair: ClosestPair,
+    /// Operation counts.
+    pub stats: SeparationStats,
+}

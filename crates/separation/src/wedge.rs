@@ -210,6 +210,8 @@ mod tests {
                 let prep = Prepared {
                     idx: (0..pts.len()).collect(),
                     pts: pts.clone(),
+                    rising: true,
+                    first_run: None,
                 };
                 let kept: Vec<usize> = apexes::<Exact>(&prep, P).iter().map(|a| a.idx).collect();
                 let up = upper_tangents::<Exact>(&pts, P);

@@ -1,0 +1,122 @@
+//! σ of strictly monotone separable chains: agreement with the brute-force twin (same kernel) and
+//! the exact oracle; every CVE matrix checked for total monotonicity and SMAWK against a scan.
+
+mod common;
+
+use common::{Case, combs, random_case};
+use monotone_minima::{brute_force_row_minima_by, check_totally_monotone_by, row_minima_by};
+use polydist_oracle::{SplitMix64, chain_distance, ulps_error_sqrt};
+use polydist_polygon::Feature;
+use polydist_predicates::{Exact, Fast, Kernel, Robust};
+use polydist_separation::{
+    CveMatrix, SeparationError, compare_edge_entries, separation_brute, separation_of_chains,
+};
+use proptest::prelude::*;
+
+fn oracle_feature(f: Feature) -> polydist_oracle::Feature {
+    match f {
+        Feature::Vertex(i) => polydist_oracle::Feature::Vertex(i),
+        Feature::Edge(i) => polydist_oracle::Feature::Edge(i),
+    }
+}
+
+/// `false` when the case has an edge perpendicular to the line (not accepted yet).
+fn agree<K: Kernel>(c: &Case, check_matrices: bool) -> bool {
+    let got = match separation_of_chains::<K>(&c.p, &c.q, c.a, c.b) {
+        Err(SeparationError::PerpendicularEdge { .. }) => return false,
+        r => r.unwrap_or_else(|e| panic!("{}: {e}", c.name)),
+    };
+    let exact = chain_distance(&c.p, &c.q);
+    let fp = oracle_feature(got.pair.feature_p);
+    let fq = oracle_feature(got.pair.feature_q);
+    assert!(
+        exact.is_optimal_pair(fp, fq),
+        "{} ({}): got {:?} ({} vs exact {:?}), optimal {:?}\np={:?}\nq={:?}",
+        c.name,
+        K::NAME,
+        (fp, fq),
+        got.pair.squared_distance,
+        polydist_oracle::to_f64_nearest(&exact.sq),
+        exact.pairs,
+        c.p,
+        c.q
+    );
+    assert!(
+        ulps_error_sqrt(got.pair.distance, &exact.sq) <= 3.5,
+        "{}",
+        c.name
+    );
+    let brute = separation_brute::<K>(&c.p, &c.q).unwrap();
+    assert_eq!(
+        brute.squared_distance, got.pair.squared_distance,
+        "{}",
+        c.name
+    );
+    if check_matrices {
+        for (p, q) in [(&c.p, &c.q), (&c.q, &c.p)] {
+            let m = CveMatrix::<K>::new(p, q, c.a, c.b).unwrap();
+            check_totally_monotone_by(&m, compare_edge_entries::<K>)
+                .unwrap_or_else(|e| panic!("{}: CVE matrix not totally monotone: {e:?}", c.name));
+            assert_eq!(
+                row_minima_by(&m, compare_edge_entries::<K>),
+                brute_force_row_minima_by(&m, compare_edge_entries::<K>),
+                "{}",
+                c.name
+            );
+        }
+    }
+    true
+}
+
+#[test]
+fn random_small_with_matrix_checks() {
+    let mut rng = SplitMix64::new(0x51);
+    let mut ran = 0;
+    for n in [1usize, 2, 3, 4, 6, 9, 14, 25] {
+        for _ in 0..250 {
+            let c = random_case(&mut rng, n, false);
+            ran += usize::from(agree::<Robust>(&c, true));
+        }
+    }
+    assert!(ran > 1000, "{ran}");
+}
+
+#[test]
+fn random_exact_and_far() {
+    let mut rng = SplitMix64::new(0x52);
+    for n in [3usize, 8, 16] {
+        for _ in 0..60 {
+            let c = random_case(&mut rng, n, true);
+            agree::<Exact>(&c, true);
+            agree::<Robust>(&c, false);
+        }
+    }
+}
+
+#[test]
+fn combs_facing() {
+    for rot in [(1, 0), (3, 4), (-5, 12)] {
+        for (gp, gq) in [(1, 1), (0, 1), (1, 0), (3, 2)] {
+            for interleave in [false, true] {
+                assert!(agree::<Robust>(&combs(12, gp, gq, interleave, rot), true));
+            }
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(500))]
+    #[test]
+    fn proptest_sigma_agrees_with_oracle(seed in any::<u64>(), n in 1usize..24, far in any::<bool>()) {
+        let mut rng = SplitMix64::new(seed);
+        let c = random_case(&mut rng, n, far);
+        agree::<Robust>(&c, n <= 12);
+    }
+
+    #[test]
+    fn proptest_fast_terminates(seed in any::<u64>(), n in 1usize..30) {
+        let mut rng = SplitMix64::new(seed);
+        let c = random_case(&mut rng, n, true);
+        let _ = separation_of_chains::<Fast>(&c.p, &c.q, c.a, c.b);
+    }
+}
