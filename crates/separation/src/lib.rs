@@ -7,14 +7,22 @@
 //!
 //! | item | what it is | status |
 //! |---|---|---|
-//! | [`closest_visible_vertices`] | CVV of two chains separated by a line and monotone along it: Lemma 2, `W()` by hull scans, Lemma 3, `R()`, the tagged matrix `M` and SMAWK, `O(n_p + n_q)` | done, tested against the brute force and the checker |
-//! | [`CvvMatrix`], [`MatrixEntry`], [`compare_entries`] | the matrix `M` itself, for verification with `monotone_minima::check_totally_monotone_by` | done |
+//! | [`separation_of_chains`] | σ of two chains separated by a line and strictly monotone along it, with a realizing pair and caller features: CVV + CVE (both ways), `O(n_p + n_q)` | done; agrees with the exact oracle, every test matrix checked for total monotonicity |
+//! | [`closest_visible_vertices`] | CVV of two chains separated by a line and monotone along it (edges perpendicular to the line allowed): Lemma 2, `W()` by hull scans, Lemma 3, `R()`, the tagged matrix `M` and SMAWK, `O(n_p + n_q)` | done |
+//! | [`CvvMatrix`], [`CveMatrix`], [`MatrixEntry`], [`EdgeEntry`], [`compare_entries`], [`compare_edge_entries`] | the matrices `M` themselves, for verification with `monotone_minima::check_totally_monotone_by` | done |
 //! | [`closest_visible_vertices_brute`], [`separation_brute`] | brute-force twins (test references, benchmark baselines) | done |
-//! | Lemma 2 for non-monotone chains (the perpendicular-visibility envelope), CVE, `σ` of two chains, chains with gaps, the disjoint-hull fast path for polygons | — | **not done**: see `docs/algorithms/separation.md` |
+//! | Lemma 2 for chains that are not monotone along the line (the perpendicular-visibility envelope, shadow points), chains with gaps, edges perpendicular to the line in σ, the disjoint-hull fast path for polygons, section 2's separators | — | **not done**: see `docs/algorithms/separation.md` |
+//!
+//! The restriction to monotone chains is the setting in which the paper states Lemmas 4–7; general
+//! chains are reduced to it by Lemma 2, the step still missing.
 //!
 //! # Numbers
-//! Every decision is the sign of a degree-2 polynomial in the input coordinates (orientation,
-//! dot and cross signs, squared-distance comparisons), decided by the kernel `K`. The matrix
+//! Every decision is the sign of a polynomial of degree at most 6 in the input coordinates,
+//! decided by the kernel `K`: degree 2 for orientation, dot and cross signs and vertex–vertex
+//! comparisons; 4 for the order of two constructed points on an edge and for the discriminant of
+//! the `α ≥ 90°` arc; 6 for a constructed point against an arc end and for vertex–edge distance
+//! comparisons. Constructed points (edge breakpoints, arc ends, the points `u^±` on edges) are never
+//! rounded to floats for a decision. The matrix
 //! entries are tagged ([`MatrixEntry`]) and compared exactly; no `f64` sentinel is used. Distances
 //! are constructed once the pair is chosen: the exact squared distance rounded once, then its square
 //! root (within 1 ulp).

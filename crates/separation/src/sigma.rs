@@ -112,11 +112,13 @@ fn cve<K: Kernel>(m: &CveMatrix<K>, edges: &Prepared, p_side: bool) -> Option<Ca
 /// use polydist_predicates::Robust;
 /// use polydist_separation::separation_of_chains;
 ///
-/// let p = [DVec2::new(1.0, 0.0), DVec2::new(3.0, 1.0), DVec2::new(1.5, 2.0)];
+/// // Two zig-zags facing each other across the y-axis.
+/// let p = [DVec2::new(1.0, 0.0), DVec2::new(3.0, 1.0), DVec2::new(0.5, 3.0)];
 /// let q = [DVec2::new(-2.0, 0.5), DVec2::new(-0.5, 1.5), DVec2::new(-3.0, 3.0)];
 /// let s = separation_of_chains::<Robust>(&p, &q, DVec2::ZERO, DVec2::Y)?;
-/// // The vertex (-0.5, 1.5) of Q is nearest to P's edge from (3, 1) to (1.5, 2).
+/// // The vertex (-0.5, 1.5) of Q is nearest to the interior of P's edge from (3, 1) to (0.5, 3).
 /// assert_eq!((s.pair.feature_p, s.pair.feature_q), (Feature::Edge(1), Feature::Vertex(1)));
+/// assert_eq!(s.pair.point_q, DVec2::new(-0.5, 1.5));
 /// # Ok::<(), polydist_separation::SeparationError>(())
 /// ```
 pub fn separation_of_chains<K: Kernel>(

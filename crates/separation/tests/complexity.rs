@@ -32,3 +32,46 @@ fn predicate_calls_are_linear() {
         }
     }
 }
+
+/// σ (CVV + two CVE searches): predicate calls per vertex, measured at most 281 (random chains,
+/// n = 256) and about 186 on interleaved combs, flat from n = 16 to 65,536.
+const SIGMA_PER_VERTEX: u64 = 400;
+
+#[test]
+fn sigma_predicate_calls_are_linear() {
+    use polydist_separation::{SeparationError, separation_of_chains};
+    let mut rng = SplitMix64::new(5);
+    let mut ran = 0;
+    for n in [16usize, 256, 4096, 32768] {
+        for c in [
+            random_case(&mut rng, n, false),
+            combs(n / 2, 1, 1, true, (3, 4)),
+        ] {
+            let total = (c.p.len() + c.q.len()) as u64;
+            reset_predicate_counts();
+            let r = match separation_of_chains::<Counted<Robust>>(&c.p, &c.q, c.a, c.b) {
+                Err(SeparationError::PerpendicularEdge { .. }) => continue,
+                r => r.unwrap(),
+            };
+            ran += 1;
+            let calls = predicate_counts().total();
+            assert!(
+                calls <= SIGMA_PER_VERTEX * total,
+                "{}: {calls} predicate calls for {total} vertices",
+                c.name
+            );
+            let s = r.stats;
+            assert!(
+                s.pieces_p <= 4 * c.p.len() && s.pieces_q <= 4 * c.q.len(),
+                "{s:?}"
+            );
+            assert!(
+                s.cve_entries_evaluated
+                    <= 3 * (s.cvv.q_after_lemma3 + s.cvv.p_after_lemma3)
+                        + 12 * (s.pieces_p + s.pieces_q)
+                        + 2
+            );
+        }
+    }
+    assert!(ran >= 6, "{ran}");
+}

@@ -120,3 +120,97 @@ proptest! {
         let _ = separation_of_chains::<Fast>(&c.p, &c.q, c.a, c.b);
     }
 }
+
+/// Nearly touching: tips a few ulps on either side of the line x = 1, interleaved heights.
+fn near_case(k: i64, n: usize, shift: f64) -> Case {
+    use glam::DVec2;
+    use polydist_oracle::step_ulps;
+    let line = 1.0f64;
+    let mut p = Vec::new();
+    let mut q = Vec::new();
+    for i in 0..n {
+        let y = i as f64 * 0.25;
+        let tip = step_ulps(line, k + (i as i64 % 3));
+        p.push(DVec2::new(if i % 2 == 0 { tip } else { line + 0.5 }, y));
+        q.push(DVec2::new(
+            if i % 2 == 1 {
+                step_ulps(line, -k)
+            } else {
+                line - 0.5
+            },
+            y + shift,
+        ));
+    }
+    Case {
+        p,
+        q,
+        a: DVec2::new(line, 0.0),
+        b: DVec2::new(line, 1.0),
+        name: format!("near k={k} n={n} shift={shift}"),
+    }
+}
+
+#[test]
+fn nearly_touching_and_degenerate() {
+    for k in [1, 2, 4] {
+        for n in [2, 3, 8, 17] {
+            for shift in [0.0, 0.125, 1e-9] {
+                let c = near_case(k, n, shift);
+                assert!(agree::<Robust>(&c, n <= 8));
+                assert!(agree::<Exact>(&c, false));
+                let _ = separation_of_chains::<Fast>(&c.p, &c.q, c.a, c.b);
+            }
+        }
+    }
+    // Right angles (Pythagorean triples), collinear runs along and across the line, one chain on it.
+    use glam::DVec2;
+    let v = DVec2::new;
+    let cases = [
+        (
+            vec![v(3.0, 0.0), v(0.0, 4.0), v(3.0, 8.0)],
+            vec![v(-4.0, 3.0), v(-1.0, 7.0)],
+        ),
+        (
+            vec![v(1.0, 0.0), v(1.0, 1.0), v(1.0, 2.0), v(1.0, 3.0)],
+            vec![v(-1.0, 0.5), v(-1.0, 1.5), v(-1.0, 2.5)],
+        ),
+        (
+            vec![v(0.0, 0.0), v(0.0, 1.0), v(2.0, 2.0), v(0.0, 3.0)],
+            vec![v(-1.0, 1.5), v(-2.0, 2.0), v(-1.0, 2.5)],
+        ),
+        (
+            vec![v(1.0, 0.0), v(2.0, 1.0), v(3.0, 2.0), v(4.0, 3.0)],
+            vec![v(-1.0, 0.0), v(-2.0, 1.0), v(-3.0, 2.0)],
+        ),
+    ];
+    for (p, q) in cases {
+        let c = Case {
+            p,
+            q,
+            a: v(0.0, 0.0),
+            b: v(0.0, 1.0),
+            name: "degenerate".into(),
+        };
+        assert!(agree::<Robust>(&c, true));
+        assert!(agree::<Exact>(&c, true));
+    }
+}
+
+#[test]
+fn perpendicular_edges_are_a_typed_error() {
+    use glam::DVec2;
+    let v = DVec2::new;
+    let r = separation_of_chains::<Robust>(
+        &[v(1.0, 0.0), v(2.0, 0.0), v(1.0, 1.0)],
+        &[v(-1.0, 0.0)],
+        v(0.0, 0.0),
+        v(0.0, 1.0),
+    );
+    assert_eq!(
+        r.unwrap_err(),
+        SeparationError::PerpendicularEdge {
+            chain: polydist_separation::Chain::P,
+            index: 1
+        }
+    );
+}
