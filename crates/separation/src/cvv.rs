@@ -1,4 +1,4 @@
-//! CVV of two chains separated by a line (Amato 1992, section 3, the algorithm of [A92] sketched
+//! CVV of two chains separated by a line (Amato 1992, section 3, the algorithm of \[A92\] sketched
 //! there): Lemma 2, the wedges and Lemma 3, the regions `R()`, and the totally monotone matrix `M`
 //! searched with SMAWK on exactly compared tagged entries.
 
@@ -194,7 +194,7 @@ impl<K: Kernel> Matrix for CvvMatrix<K> {
 
 /// The closest visible vertex pair (CVV) of two polygonal chains `p` and `q` separated by the line
 /// through `a` and `b`, both chains monotone along that line (Amato 1992, section 3, the CVV
-/// algorithm of [A92]; Aggarwal–Klawe–Moran–Shor–Wilber 1987 for the matrix search).
+/// algorithm of \[A92\]; Aggarwal–Klawe–Moran–Shor–Wilber 1987 for the matrix search).
 ///
 /// Two vertices are visible when the open segment between them meets neither chain. Steps: Lemma 2
 /// (keep the perpendicularly visible vertices; for monotone chains, the nearest of each run at equal

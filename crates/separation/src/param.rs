@@ -149,6 +149,19 @@ impl Polynomial<14> for VertexSide {
     }
 }
 
+/// `(2x − h − l)·(b − a)`: `B` for `x = a`, `2A + B` for `x = b` (the side of the vertex of `F`
+/// an edge end is on). Inputs `[x, h, l, a, b]`. Degree 2.
+pub(crate) struct EndSide;
+impl Polynomial<10> for EndSide {
+    const DEGREE: u32 = 2;
+    fn eval<R: Ring>(&self, x: &[R; 10]) -> R {
+        let (p, h, l, a, b) = (pt(x, 0), pt(x, 1), pt(x, 2), pt(x, 3), pt(x, 4));
+        let sx = p.0.add(p.0).sub(h.0).sub(l.0);
+        let sy = p.1.add(p.1).sub(h.1).sub(l.1);
+        sx.mul(&b.0.sub(a.0)).add(&sy.mul(&b.1.sub(a.1)))
+    }
+}
+
 fn flat<const N: usize>(pts: &[DVec2]) -> [f64; N] {
     core::array::from_fn(|i| {
         if i % 2 == 0 {
@@ -162,6 +175,10 @@ fn flat<const N: usize>(pts: &[DVec2]) -> [f64; N] {
 /// A parameter on an edge `(a, b)`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) enum Param {
+    /// `t = 0`, the edge's start `a`.
+    Start,
+    /// `t = 1`, the edge's end `b`.
+    End,
     /// The root of the affine form (`f(a) ≠ f(b)`).
     Root(Affine),
     /// The lower (`hi == false`) or upper root of `F` for the tangent points `h`, `l`; always
@@ -180,28 +197,6 @@ pub(crate) struct EdgePoint {
     /// The edge: from vertex `edge` to vertex `edge + 1` of the prepared chain.
     pub(crate) edge: usize,
     pub(crate) param: Param,
-}
-
-/// The edge's start `t = 0`: the root of `(x − a)·(b − a)`.
-pub(crate) fn start(a: DVec2, b: DVec2) -> Param {
-    Param::Root(Affine {
-        cross: false,
-        c: a,
-        v0: a,
-        v1: b,
-        neg: false,
-    })
-}
-
-/// The edge's end `t = 1`: the root of `(x − b)·(b − a)`.
-pub(crate) fn end(a: DVec2, b: DVec2) -> Param {
-    Param::Root(Affine {
-        cross: false,
-        c: b,
-        v0: a,
-        v1: b,
-        neg: false,
-    })
 }
 
 /// Exact geometry of one edge `(a, b)`.
@@ -237,17 +232,34 @@ impl Edge {
         } else {
             side
         };
-        match (fv, vs) {
-            (Sign::Negative, _) => (Ordering::Greater, Ordering::Less),
-            (Sign::Zero, Sign::Negative) => (Ordering::Equal, Ordering::Less),
-            (Sign::Zero, Sign::Positive) => (Ordering::Greater, Ordering::Equal),
-            (Sign::Zero, Sign::Zero) => (Ordering::Equal, Ordering::Equal),
-            (Sign::Positive, Sign::Negative) => (Ordering::Less, Ordering::Less),
-            // F > 0 at the vertex would mean no real roots; the caller checked B² − 4AC ≥ 0.
-            (Sign::Positive, _) => (Ordering::Greater, Ordering::Greater),
-        }
+        arc_position(fv, vs)
     }
 
+    /// [`Self::against_arc`] for the edge's start (`at_end == false`) or end.
+    fn end_against_arc<K: Kernel>(&self, at_end: bool, h: DVec2, l: DVec2) -> (Ordering, Ordering) {
+        let x = if at_end { self.b } else { self.a };
+        // F(x) = (h − x)·(l − x); the side of the vertex: sign(B) at a, sign(2A + B) at b.
+        let fv = K::dot_sign(x, h, x, l);
+        let vs = K::sign(&EndSide, &flat::<10>(&[x, h, l, self.a, self.b]));
+        arc_position(fv, vs)
+    }
+}
+
+/// A parameter's place relative to the roots `r1 ≤ r2` of `F` from `sign(F(t))` and
+/// `sign(t − vertex)`: `(t vs r1, t vs r2)`.
+fn arc_position(fv: Sign, vs: Sign) -> (Ordering, Ordering) {
+    match (fv, vs) {
+        (Sign::Negative, _) => (Ordering::Greater, Ordering::Less),
+        (Sign::Zero, Sign::Negative) => (Ordering::Equal, Ordering::Less),
+        (Sign::Zero, Sign::Positive) => (Ordering::Greater, Ordering::Equal),
+        (Sign::Zero, Sign::Zero) => (Ordering::Equal, Ordering::Equal),
+        (Sign::Positive, Sign::Negative) => (Ordering::Less, Ordering::Less),
+        // F > 0 at the vertex would mean no real roots; the caller checked B² − 4AC ≥ 0.
+        (Sign::Positive, _) => (Ordering::Greater, Ordering::Greater),
+    }
+}
+
+impl Edge {
     /// `sign(B² − 4AC)` for the tangent points `(h, l)`.
     pub(crate) fn disc<K: Kernel>(&self, h: DVec2, l: DVec2) -> Sign {
         K::sign(&Disc, &flat::<8>(&[self.a, self.b, h, l]))
@@ -256,6 +268,8 @@ impl Edge {
     /// `sign(g(x))` at the point with parameter `t` on this edge.
     pub(crate) fn eval<K: Kernel>(&self, g: &Affine, t: &Param) -> Sign {
         let raw = match t {
+            Param::Start => g.raw_at::<K>(self.a),
+            Param::End => g.raw_at::<K>(self.b),
             Param::Root(f) => {
                 // g at the root of f: (f(a)g(b) − f(b)g(a)) / (f(a) − f(b)).
                 let s = self.root_pair::<K>(f, g);
@@ -281,31 +295,56 @@ impl Edge {
         if g.neg { raw.reversed() } else { raw }
     }
 
+    /// `sign(root_f − e)` for the edge end `e` (start: `t = 0`, end: `t = 1`): `sign(f(e)) ·
+    /// sign(f(a) − f(b))`, negated for the start (degree 2).
+    fn root_vs_end<K: Kernel>(&self, f: &Affine, at_end: bool) -> Ordering {
+        let fe = f.raw_at::<K>(if at_end { self.b } else { self.a });
+        let d = f.raw_drop::<K>(self.a, self.b);
+        // root − 0 = f(a)/D; root − 1 = f(b)/D.
+        let s = if d == Sign::Negative {
+            fe.reversed()
+        } else {
+            fe
+        };
+        s.to_ordering()
+    }
+
     /// Compares two parameters on this edge (`Less`: `s` nearer to `a`).
     pub(crate) fn cmp<K: Kernel>(&self, s: &Param, t: &Param) -> Ordering {
+        use Param::{Clip, End, Root, Start};
         match (s, t) {
-            (Param::Root(f), Param::Root(g)) => {
+            (Start, Start) | (End, End) => Ordering::Equal,
+            (Start, End) => Ordering::Less,
+            (End, Start) => Ordering::Greater,
+            (Root(f), Start) => self.root_vs_end::<K>(f, false),
+            (Root(f), End) => self.root_vs_end::<K>(f, true),
+            (Start | End, Root(_)) => self.cmp::<K>(t, s).reverse(),
+            (Start | End, Clip { h, l, hi, .. }) => {
+                let (v1, v2) = self.end_against_arc::<K>(matches!(s, End), *h, *l);
+                if *hi { v2 } else { v1 }
+            }
+            (Clip { .. }, Start | End) => self.cmp::<K>(t, s).reverse(),
+            (Root(f), Root(g)) => {
                 // root_f − root_g = (g(a)f(b) − f(a)g(b)) / ((f(a) − f(b))(g(a) − g(b))).
-                let num = self.root_pair::<K>(f, g).reversed();
-                let mut s = num;
+                let mut r = self.root_pair::<K>(f, g).reversed();
                 if f.raw_drop::<K>(self.a, self.b) == Sign::Negative {
-                    s = s.reversed();
+                    r = r.reversed();
                 }
                 if g.raw_drop::<K>(self.a, self.b) == Sign::Negative {
-                    s = s.reversed();
+                    r = r.reversed();
                 }
-                s.to_ordering()
+                r.to_ordering()
             }
-            (Param::Root(f), Param::Clip { h, l, hi, .. }) => {
+            (Root(f), Clip { h, l, hi, .. }) => {
                 let (v1, v2) = self.against_arc::<K>(f, *h, *l);
                 if *hi { v2 } else { v1 }
             }
-            (Param::Clip { .. }, Param::Root(_)) => self.cmp::<K>(t, s).reverse(),
+            (Clip { .. }, Root(_)) => self.cmp::<K>(t, s).reverse(),
             (
-                Param::Clip {
+                Clip {
                     h, l, hi, piece, ..
                 },
-                Param::Clip {
+                Clip {
                     hi: hi2,
                     piece: piece2,
                     ..
@@ -324,11 +363,11 @@ impl Edge {
 
     /// `true` when `t` is exactly the start (`at_end == false`) or the end of the edge.
     pub(crate) fn is_end<K: Kernel>(&self, t: &Param, at_end: bool) -> bool {
-        let e = if at_end {
-            end(self.a, self.b)
-        } else {
-            start(self.a, self.b)
-        };
-        matches!(t, Param::Root(_)) && self.cmp::<K>(t, &e) == Ordering::Equal
+        match t {
+            Param::Start => !at_end,
+            Param::End => at_end,
+            Param::Root(f) => f.raw_at::<K>(if at_end { self.b } else { self.a }) == Sign::Zero,
+            Param::Clip { .. } => false,
+        }
     }
 }

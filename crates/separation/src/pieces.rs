@@ -8,7 +8,7 @@ use glam::DVec2;
 use polydist_predicates::{Kernel, Sign};
 
 use crate::frame::Frame;
-use crate::param::{Affine, Edge, Param, end, start};
+use crate::param::{Affine, Edge, Param};
 
 /// A piece of edge `edge` (from prepared vertex `edge` to `edge + 1`), from `bot` to `top`, with
 /// constant tangent points `hi = h(x)` and `lo = l(x)` (`None`: the ray is parallel to the line)
@@ -111,7 +111,7 @@ pub(crate) fn pieces<K: Kernel>(pts: &[DVec2], frame: Frame) -> Vec<Piece> {
         if i + 1 < n {
             let e = &edges[i];
             let mut desc: Vec<Span> = Vec::new();
-            let mut top = end(e.a, e.b);
+            let mut top = Param::End;
             let mut cur = if popped.is_empty() {
                 pts[i + 1]
             } else {
@@ -131,7 +131,7 @@ pub(crate) fn pieces<K: Kernel>(pts: &[DVec2], frame: Frame) -> Vec<Piece> {
                 cur = pts[cm1];
             }
             desc.push(Span {
-                bot: start(e.a, e.b),
+                bot: Param::Start,
                 top,
                 tangent: Some(cur),
             });
@@ -157,7 +157,7 @@ pub(crate) fn pieces<K: Kernel>(pts: &[DVec2], frame: Frame) -> Vec<Piece> {
         if i >= 1 {
             let e = &edges[i - 1];
             let mut asc: Vec<Span> = Vec::new();
-            let mut bot = start(e.a, e.b);
+            let mut bot = Param::Start;
             let mut cur = if popped.is_empty() {
                 pts[i - 1]
             } else {
@@ -178,7 +178,7 @@ pub(crate) fn pieces<K: Kernel>(pts: &[DVec2], frame: Frame) -> Vec<Piece> {
             }
             asc.push(Span {
                 bot,
-                top: end(e.a, e.b),
+                top: Param::End,
                 tangent: Some(cur),
             });
             lower[i - 1] = depth_rule::<K>(e, frame, asc);
@@ -190,7 +190,7 @@ pub(crate) fn pieces<K: Kernel>(pts: &[DVec2], frame: Frame) -> Vec<Piece> {
     for (k, e) in edges.iter().enumerate() {
         let (us, ls) = (&upper[k], &lower[k]);
         let (mut iu, mut il) = (0, 0);
-        let mut bot = start(e.a, e.b);
+        let mut bot = Param::Start;
         // Each step advances at least one list: at most |us| + |ls| steps.
         while iu < us.len() && il < ls.len() {
             let (tu, tl) = (us[iu].top, ls[il].top);
@@ -320,6 +320,8 @@ mod tests {
             if g.cross { d.perp_dot(w) } else { d.dot(w) }
         };
         match t {
+            Param::Start => 0.0,
+            Param::End => 1.0,
             Param::Root(f) => {
                 let (fa, fb) = (val(f, e.a), val(f, e.b));
                 fa / (fa - fb)
