@@ -138,3 +138,55 @@ fn single_vertices() {
         (0, 0)
     );
 }
+
+mod never_panics {
+    use glam::DVec2;
+    use polydist_predicates::{Fast, Robust};
+    use polydist_separation::{
+        closest_visible_vertices, closest_visible_vertices_brute, separation_brute,
+        separation_of_chains,
+    };
+    use proptest::prelude::*;
+
+    fn coord() -> impl Strategy<Value = f64> {
+        prop_oneof![
+            (-8i32..8i32).prop_map(f64::from),
+            any::<f64>(),
+            Just(f64::NAN),
+            Just(1e300),
+            Just(-0.0),
+        ]
+    }
+
+    fn chain() -> impl Strategy<Value = Vec<DVec2>> {
+        prop::collection::vec((coord(), coord()).prop_map(|(x, y)| DVec2::new(x, y)), 0..8)
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(600))]
+        /// Any input, valid or not, gives an answer or a typed error under every kernel.
+        #[test]
+        fn no_input_panics(p in chain(), q in chain(), a in (coord(), coord()), b in (coord(), coord())) {
+            let (a, b) = (DVec2::new(a.0, a.1), DVec2::new(b.0, b.1));
+            let _ = separation_of_chains::<Robust>(&p, &q, a, b);
+            let _ = separation_of_chains::<Fast>(&p, &q, a, b);
+            let _ = closest_visible_vertices::<Robust>(&p, &q, a, b);
+            let _ = closest_visible_vertices::<Fast>(&p, &q, a, b);
+            let _ = closest_visible_vertices_brute::<Robust>(&p, &q, a, b);
+            let _ = separation_brute::<Robust>(&p, &q);
+        }
+
+        /// Separated lattice chains that may be non-monotone: an answer or `NotMonotone`, never a panic;
+        /// when an answer, it equals the brute force.
+        #[test]
+        fn lattice_inputs(p in prop::collection::vec((1i32..6, -6i32..6), 1..7),
+                          q in prop::collection::vec((-6i32..0, -6i32..6), 1..7)) {
+            let p: Vec<DVec2> = p.into_iter().map(|(x, y)| DVec2::new(x.into(), y.into())).collect();
+            let q: Vec<DVec2> = q.into_iter().map(|(x, y)| DVec2::new(x.into(), y.into())).collect();
+            if let Ok(s) = separation_of_chains::<Robust>(&p, &q, DVec2::ZERO, DVec2::Y) {
+                let b = separation_brute::<Robust>(&p, &q).unwrap();
+                prop_assert_eq!(s.pair.squared_distance, b.squared_distance);
+            }
+        }
+    }
+}
