@@ -362,13 +362,22 @@ impl<K: Kernel> CveMatrix<K> {
                 (true, true) => {}
                 (false, false) => return None,
                 (false, true) => {
-                    let r = Param::Root(*g);
+                    // A zero at the top end is the top itself: no new root.
+                    let r = if gt == Sign::Zero {
+                        pc.top
+                    } else {
+                        Param::Root(*g)
+                    };
                     if e.cmp::<K>(&r, &lb) == Ordering::Greater {
                         lb = r;
                     }
                 }
                 (true, false) => {
-                    let r = Param::Root(*g);
+                    let r = if gb == Sign::Zero {
+                        pc.bot
+                    } else {
+                        Param::Root(*g)
+                    };
                     if e.cmp::<K>(&r, &ub) == Ordering::Less {
                         ub = r;
                     }

@@ -29,6 +29,12 @@ pub(crate) struct Affine {
 }
 
 impl Affine {
+    /// `true` when both are the same function up to sign (hence have the same root): a structural
+    /// shortcut that spares an exact evaluation of a polynomial that is identically zero.
+    fn same_root(&self, other: &Affine) -> bool {
+        self.cross == other.cross && self.c == other.c && self.v0 == other.v0 && self.v1 == other.v1
+    }
+
     /// The form with the opposite sign.
     pub(crate) fn negated(self) -> Affine {
         Affine {
@@ -270,6 +276,7 @@ impl Edge {
         let raw = match t {
             Param::Start => g.raw_at::<K>(self.a),
             Param::End => g.raw_at::<K>(self.b),
+            Param::Root(f) if f.same_root(g) => Sign::Zero,
             Param::Root(f) => {
                 // g at the root of f: (f(a)g(b) − f(b)g(a)) / (f(a) − f(b)).
                 let s = self.root_pair::<K>(f, g);
@@ -324,6 +331,7 @@ impl Edge {
                 if *hi { v2 } else { v1 }
             }
             (Clip { .. }, Start | End) => self.cmp::<K>(t, s).reverse(),
+            (Root(f), Root(g)) if f.same_root(g) => Ordering::Equal,
             (Root(f), Root(g)) => {
                 // root_f − root_g = (g(a)f(b) − f(a)g(b)) / ((f(a) − f(b))(g(a) − g(b))).
                 let mut r = self.root_pair::<K>(f, g).reversed();

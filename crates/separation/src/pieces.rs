@@ -53,13 +53,17 @@ fn depth_rule<K: Kernel>(e: &Edge, frame: Frame, spans: Vec<Span>) -> Vec<Span> 
         };
         let g = frame.depth_minus(t);
         let (gb, gt) = (e.eval::<K>(&g, &s.bot), e.eval::<K>(&g, &s.top));
-        let valid = |v: Sign| v == Sign::Positive;
-        match (valid(gb), valid(gt)) {
-            (true, true) => out.push(s),
-            (false, false) => out.push(Span { tangent: None, ..s }),
-            (vb, _) => {
+        // Split only where the sign strictly changes; a zero at one end is that end itself, and a
+        // single point keeps the tangent of the rest of the piece (it is also a piece end of the
+        // neighbour or a vertex, tested there).
+        match (gb, gt) {
+            (Sign::Positive, Sign::Negative) | (Sign::Negative, Sign::Positive) => {
                 let w = Param::Root(g);
-                let (lower, upper) = if vb { (Some(t), None) } else { (None, Some(t)) };
+                let (lower, upper) = if gb == Sign::Positive {
+                    (Some(t), None)
+                } else {
+                    (None, Some(t))
+                };
                 out.push(Span {
                     bot: s.bot,
                     top: w,
@@ -71,6 +75,8 @@ fn depth_rule<K: Kernel>(e: &Edge, frame: Frame, spans: Vec<Span>) -> Vec<Span> 
                     tangent: upper,
                 });
             }
+            _ if gb == Sign::Positive || gt == Sign::Positive => out.push(s),
+            _ => out.push(Span { tangent: None, ..s }),
         }
     }
     out
