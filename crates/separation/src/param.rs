@@ -241,6 +241,19 @@ impl Edge {
         arc_position(fv, vs)
     }
 
+    /// [`Self::against_arc`], but a root that is exactly an edge end is placed by the degree-2 end
+    /// test: at an end that is also a tangent point, `F` vanishes exactly there and the degree-6
+    /// test would need exact arithmetic.
+    fn root_against_arc<K: Kernel>(&self, g: &Affine, h: DVec2, l: DVec2) -> (Ordering, Ordering) {
+        if g.raw_at::<K>(self.a) == Sign::Zero {
+            self.end_against_arc::<K>(false, h, l)
+        } else if g.raw_at::<K>(self.b) == Sign::Zero {
+            self.end_against_arc::<K>(true, h, l)
+        } else {
+            self.against_arc::<K>(g, h, l)
+        }
+    }
+
     /// [`Self::against_arc`] for the edge's start (`at_end == false`) or end.
     fn end_against_arc<K: Kernel>(&self, at_end: bool, h: DVec2, l: DVec2) -> (Ordering, Ordering) {
         let x = if at_end { self.b } else { self.a };
@@ -292,7 +305,7 @@ impl Edge {
                     g.raw_at::<K>(self.a)
                 } else {
                     // g(t) = D (root_g − t): sign(D) · sign(root_g − r).
-                    let (v1, v2) = self.against_arc::<K>(g, *h, *l);
+                    let (v1, v2) = self.root_against_arc::<K>(g, *h, *l);
                     let o = if *hi { v2 } else { v1 };
                     let s = Sign::from_ordering(o);
                     if d == Sign::Negative { s.reversed() } else { s }
@@ -344,7 +357,7 @@ impl Edge {
                 r.to_ordering()
             }
             (Root(f), Clip { h, l, hi, .. }) => {
-                let (v1, v2) = self.against_arc::<K>(f, *h, *l);
+                let (v1, v2) = self.root_against_arc::<K>(f, *h, *l);
                 if *hi { v2 } else { v1 }
             }
             (Clip { .. }, Root(_)) => self.cmp::<K>(t, s).reverse(),
