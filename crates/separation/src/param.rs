@@ -44,6 +44,11 @@ impl Affine {
     }
 
     fn raw_at<K: Kernel>(&self, x: DVec2) -> Sign {
+        // Structural zeros (x − c = 0, v1 − v0 = 0, or x − c = v1 − v0 for a cross product) are
+        // decided here: an exact zero is the one case the Robust filter cannot certify.
+        if x == self.c || self.v0 == self.v1 || (self.cross && self.c == self.v0 && x == self.v1) {
+            return Sign::Zero;
+        }
         if self.cross {
             K::cross_sign(self.c, x, self.v0, self.v1)
         } else {
@@ -53,6 +58,9 @@ impl Affine {
 
     /// `sign(g(a) − g(b))` without the negation: `op(a − b, v1 − v0)`.
     fn raw_drop<K: Kernel>(&self, a: DVec2, b: DVec2) -> Sign {
+        if a == b || self.v0 == self.v1 {
+            return Sign::Zero;
+        }
         if self.cross {
             K::cross_sign(b, a, self.v0, self.v1)
         } else {
