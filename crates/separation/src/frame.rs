@@ -25,6 +25,10 @@ impl Frame {
     /// Compares the heights of `a` and `b` along the line: `sign((a − b) · d)` (degree 2).
     #[inline]
     pub(crate) fn cmp_height<K: Kernel>(&self, a: DVec2, b: DVec2) -> Ordering {
+        // Equal points: an exact zero, decided here rather than by the kernel's exact stage.
+        if a == b {
+            return Ordering::Equal;
+        }
         K::dot_sign(b, a, self.l0, self.l1).to_ordering()
     }
 
@@ -32,6 +36,9 @@ impl Frame {
     /// `sign((a − b) × d)`, negated for the mirrored chain (degree 2).
     #[inline]
     pub(crate) fn cmp_depth<K: Kernel>(&self, a: DVec2, b: DVec2) -> Ordering {
+        if a == b {
+            return Ordering::Equal;
+        }
         let s = K::cross_sign(b, a, self.l0, self.l1);
         if self.mirror { s.reversed() } else { s }.to_ordering()
     }
@@ -48,6 +55,9 @@ impl Frame {
     /// chain (degree 2).
     #[inline]
     pub(crate) fn orient<K: Kernel>(&self, a: DVec2, b: DVec2, c: DVec2) -> Sign {
+        if a == b || b == c || a == c {
+            return Sign::Zero;
+        }
         let s = K::orient(a, b, c).sign();
         if self.mirror { s.reversed() } else { s }
     }
