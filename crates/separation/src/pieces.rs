@@ -289,6 +289,16 @@ fn clip_and_push<K: Kernel>(
     } else {
         top
     };
+    // A piece clipped down to one end of its edge is that vertex alone (typically `F` vanishing at
+    // the edge's top because the top is its own tangent point `h`). The vertex is a CVV candidate, and
+    // the piece's wedge (built from the tangents of the edge's interior) is not the vertex's own: as a
+    // row it would reject admissible `u` and, through the cap of the `R()` scan, starve the rows
+    // below (found by the soak test, see docs). Dropped.
+    if e.cmp::<K>(&new_bot, &new_top) == Ordering::Equal
+        && (e.is_end::<K>(&new_bot, false) || e.is_end::<K>(&new_top, true))
+    {
+        return;
+    }
     out.push(Piece {
         edge: k,
         bot: new_bot,

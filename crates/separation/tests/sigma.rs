@@ -271,3 +271,58 @@ fn larger_non_lattice_chains_match_the_brute_force() {
     }
     assert!(ran >= 40, "only {ran} of 60 inputs were accepted");
 }
+
+/// Regression (found by a 40,000-case soak): a piece of `Q`'s edge clipped down to its top vertex,
+/// whose tangent is that vertex itself, kept the interior's wedge; as a row it rejected `P`'s vertex
+/// `(48, −33)` and, through the cap of the `R()` scan, starved the edge below, where σ is realized.
+#[test]
+fn regression_single_point_piece_at_its_own_tangent() {
+    use glam::DVec2;
+    let v = DVec2::new;
+    let p = [
+        v(48., -36.),
+        v(52., -35.),
+        v(59., -34.),
+        v(48., -33.),
+        v(59., -31.),
+        v(55., -30.),
+        v(55., -27.),
+        v(54., -26.),
+    ];
+    let q = [
+        v(36., -36.),
+        v(38., -34.),
+        v(37., -32.),
+        v(38., -31.),
+        v(41., -30.),
+        v(34., -28.),
+        v(43., -27.),
+        v(45., -26.),
+    ];
+    let c = Case {
+        p: p.to_vec(),
+        q: q.to_vec(),
+        a: v(47., -36.),
+        b: v(47., -35.),
+        name: "regression".into(),
+    };
+    assert!(agree::<Robust>(&c, true));
+    let s = separation_of_chains::<Robust>(&c.p, &c.q, c.a, c.b).unwrap();
+    assert_eq!(
+        (s.pair.feature_p, s.pair.feature_q),
+        (Feature::Vertex(3), Feature::Edge(6))
+    );
+}
+
+/// A soak: many small random cases (lattice, ties, rotations, far offsets) against the oracle.
+#[test]
+fn soak_small_random_cases() {
+    let mut rng = SplitMix64::new(0x50a6);
+    let mut ran = 0;
+    for it in 0..6000 {
+        let n = 1 + rng.index(10);
+        let c = random_case(&mut rng, n, it % 5 == 0);
+        ran += usize::from(agree::<Robust>(&c, false));
+    }
+    assert!(ran > 4000, "{ran}");
+}
