@@ -18,6 +18,26 @@ pub(crate) struct Prepared {
     pub(crate) rising: bool,
     /// The caller's index of the first vertex dropped from a run perpendicular to the line.
     pub(crate) first_run: Option<usize>,
+    /// For each kept vertex, the first and the last vertex of its run at that height in the order
+    /// the chain is walked (both the vertex itself when it is alone at its height), with caller
+    /// indices: the edge from `last[k]` to `first[k + 1]` is a real edge of the chain.
+    pub(crate) first: Vec<(DVec2, usize)>,
+    pub(crate) last: Vec<(DVec2, usize)>,
+}
+
+impl Prepared {
+    /// The real edge between heights `k` and `k + 1`: `(a, b, caller index of a, of b)`.
+    pub(crate) fn edge(&self, k: usize) -> (DVec2, DVec2, usize, usize) {
+        let (a, ia) = self.last[k];
+        let (b, ib) = self.first[k + 1];
+        (a, b, ia, ib)
+    }
+
+    /// The caller's edge index of the real edge `k`.
+    pub(crate) fn caller_edge(&self, k: usize) -> usize {
+        let ib = self.first[k + 1].1;
+        if self.rising { ib - 1 } else { ib }
+    }
 }
 
 /// The two frames of a validated input: `P` right of the oriented line, `Q` left of it.
@@ -132,6 +152,8 @@ pub(crate) fn prepare_monotone<K: Kernel>(
     let mut prev = order[0];
     out.pts.push(chain[prev]);
     out.idx.push(prev);
+    out.first.push((chain[prev], prev));
+    out.last.push((chain[prev], prev));
     // Direction of depth within the current run of equal heights (None: run of one vertex).
     let mut run_dir: Option<Ordering> = None;
     for &i in &order[1..] {
@@ -150,6 +172,8 @@ pub(crate) fn prepare_monotone<K: Kernel>(
                 run_dir = None;
                 out.pts.push(v);
                 out.idx.push(i);
+                out.first.push((v, i));
+                out.last.push((v, i));
             }
             Ordering::Equal => {
                 // Equal height and distinct points: the depths differ (the frame is a similarity).
@@ -163,6 +187,9 @@ pub(crate) fn prepare_monotone<K: Kernel>(
                 run_dir = Some(dir);
                 if out.first_run.is_none() {
                     out.first_run = Some(i);
+                }
+                if let Some(l) = out.last.last_mut() {
+                    *l = (v, i);
                 }
                 // Keep the nearer of the run's vertices: the last kept one is the nearest so far.
                 if dir == Ordering::Less {

@@ -1,4 +1,4 @@
-//! CVE of two chains separated by a line, strictly monotone along it (Amato 1992, section 3): the
+//! CVE of two chains separated by a line and monotone along it (Amato 1992, section 3): the
 //! edges of one chain cut into pieces with constant `h()`, `l()` and `α ≥ 90°`, the regions `R()` of
 //! pieces and of the other chain's vertices, and the tagged matrix `M` searched with SMAWK.
 
@@ -15,6 +15,7 @@ use crate::error::{Chain, SeparationError};
 use crate::frame::Frame;
 use crate::param::{Affine, Edge, EdgePoint, Param};
 use crate::pieces::{Piece, pieces};
+use crate::sigma::real_edges;
 use crate::wedge::{Apex, apexes};
 
 /// An entry of the CVE matrix: like [`MatrixEntry`](crate::MatrixEntry), with the distance from
@@ -83,7 +84,8 @@ enum Cap {
 pub struct CveMatrix<K: Kernel> {
     fp: Frame,
     fq: Frame,
-    pts: Vec<DVec2>,
+    /// The real edges of the row chain, between consecutive heights.
+    edges: Vec<(DVec2, DVec2)>,
     pieces: Vec<Piece>,
     cols: Vec<Apex>,
     piece_bands: Vec<Band<DVec2>>,
@@ -102,27 +104,22 @@ impl<K: Kernel> CveMatrix<K> {
         let frames = validate::<K>(p, q, a, b)?;
         let pp = prepare_monotone::<K>(p, frames.p, Chain::P)?;
         let qq = prepare_monotone::<K>(q, frames.q, Chain::Q)?;
-        for (chain, prep) in [(Chain::P, &pp), (Chain::Q, &qq)] {
-            if let Some(index) = prep.first_run {
-                return Err(SeparationError::PerpendicularEdge { chain, index });
-            }
-        }
         let cols = apexes::<K>(&qq, frames.q);
-        let ps = pieces::<K>(&pp.pts, frames.p);
-        Ok(Self::build(frames.p, frames.q, pp.pts, ps, cols))
+        let ps = pieces::<K>(&pp, frames.p);
+        Ok(Self::build(frames.p, frames.q, real_edges(&pp), ps, cols))
     }
 
     pub(crate) fn build(
         fp: Frame,
         fq: Frame,
-        pts: Vec<DVec2>,
+        edges: Vec<(DVec2, DVec2)>,
         pieces: Vec<Piece>,
         cols: Vec<Apex>,
     ) -> Self {
         let mut m = CveMatrix {
             fp,
             fq,
-            pts,
+            edges,
             pieces,
             cols,
             piece_bands: Vec::new(),
@@ -153,8 +150,8 @@ impl<K: Kernel> CveMatrix<K> {
 
     fn edge(&self, k: usize) -> Edge {
         Edge {
-            a: self.pts[k],
-            b: self.pts[k + 1],
+            a: self.edges[k].0,
+            b: self.edges[k].1,
         }
     }
 
@@ -172,8 +169,9 @@ impl<K: Kernel> CveMatrix<K> {
         self.edge(x.edge).is_end::<K>(&x.param, at_end)
     }
 
-    /// Compares the heights of two points of this chain (the chain is strictly monotone: the order
-    /// along the chain).
+    /// Compares the heights of two points of this chain. Heights increase along the rows' edges;
+    /// the end of one edge and the start of the next are at the same height (the same vertex, or
+    /// the two ends of a run perpendicular to the line) and compare equal.
     fn cmp_points(&self, x: &EdgePoint, y: &EdgePoint) -> Ordering {
         match x.edge.cmp(&y.edge) {
             Ordering::Equal => self.edge(x.edge).cmp::<K>(&x.param, &y.param),

@@ -70,15 +70,6 @@ pub enum SeparationError {
         /// The caller's index of the first vertex where monotonicity fails.
         index: usize,
     },
-    /// [`separation_of_chains`](crate::separation_of_chains) does not accept an edge perpendicular to
-    /// the line yet (two consecutive vertices at equal height); vertex `index` ends the first one.
-    #[error("chain {chain} has an edge perpendicular to the line ending at vertex {index}")]
-    PerpendicularEdge {
-        /// The chain.
-        chain: Chain,
-        /// The caller's index of the vertex ending the first perpendicular edge.
-        index: usize,
-    },
     /// The search found no admissible vertex pair. With an exact kernel this cannot happen (it would
     /// be a bug); with the `Fast` kernel inconsistent decisions can cause it.
     #[error(

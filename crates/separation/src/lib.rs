@@ -7,11 +7,11 @@
 //!
 //! | item | what it is | status |
 //! |---|---|---|
-//! | [`separation_of_chains`] | σ of two chains separated by a line and strictly monotone along it, with a realizing pair and caller features: CVV + CVE (both ways), `O(n_p + n_q)` | done; agrees with the exact oracle, every test matrix checked for total monotonicity |
+//! | [`separation_of_chains`] | σ of two chains separated by a line and monotone along it (edges perpendicular to it allowed), with a realizing pair and caller features: CVV + CVE (both ways), `O(n_p + n_q)` | done; agrees with the exact oracle, every test matrix checked for total monotonicity |
 //! | [`closest_visible_vertices`] | CVV of two chains separated by a line and monotone along it (edges perpendicular to the line allowed): Lemma 2, `W()` by hull scans, Lemma 3, `R()`, the tagged matrix `M` and SMAWK, `O(n_p + n_q)` | done |
 //! | [`CvvMatrix`], [`CveMatrix`], [`MatrixEntry`], [`EdgeEntry`], [`compare_entries`], [`compare_edge_entries`] | the matrices `M` themselves, for verification with `monotone_minima::check_totally_monotone_by` | done |
 //! | [`closest_visible_vertices_brute`], [`separation_brute`] | brute-force twins (test references, benchmark baselines) | done |
-//! | Lemma 2 for chains that are not monotone along the line (the perpendicular-visibility envelope, shadow points), chains with gaps, edges perpendicular to the line in σ, the disjoint-hull fast path for polygons, section 2's separators | — | **not done**: see `docs/algorithms/separation.md` |
+//! | Lemma 2 for chains that are not monotone along the line (the perpendicular-visibility envelope, shadow points), chains with gaps, lines touched by both chains, the disjoint-hull fast path for polygons, section 2's separators | — | **not done**: see `docs/algorithms/separation.md` |
 //!
 //! The restriction to monotone chains is the setting in which the paper states Lemmas 4–7; general
 //! chains are reduced to it by Lemma 2, the step still missing.

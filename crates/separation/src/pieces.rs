@@ -1,4 +1,4 @@
-//! The partition of the edges of a chain (strictly monotone along the line) into pieces on which
+//! The partition of the edges of a chain (monotone along the line) into pieces on which
 //! `h()` and `l()` are constant (Amato's Figure 8), and the clipping of each piece to the arc where
 //! `α ≥ 90°` (the disk with diameter `[l, h]`, Figure 5).
 
@@ -7,6 +7,7 @@ use core::cmp::Ordering;
 use glam::DVec2;
 use polydist_predicates::{Kernel, Sign};
 
+use crate::chain::Prepared;
 use crate::frame::Frame;
 use crate::param::{Affine, Edge, Param};
 
@@ -89,105 +90,117 @@ fn depth_rule<K: Kernel>(e: &Edge, frame: Frame, spans: Vec<Span>) -> Vec<Span> 
 /// it crosses the line of each popped pair `m ≥ 2` (Amato's breakpoints; at most one per popped hull
 /// edge, so `O(n)` in all), and where the tangent point's depth is reached. The two partitions are
 /// merged and each piece is clipped to `F(t) ≤ 0`. `O(n)` predicates of degree ≤ 6.
-pub(crate) fn pieces<K: Kernel>(pts: &[DVec2], frame: Frame) -> Vec<Piece> {
+pub(crate) fn pieces<K: Kernel>(prep: &Prepared, frame: Frame) -> Vec<Piece> {
+    let pts = &prep.pts[..];
     let n = pts.len();
     if n < 2 {
         return Vec::new();
     }
+    // The real edges; an end may be a vertex hidden behind the nearest vertex of a run at its
+    // height (an edge perpendicular to the line).
     let edges: Vec<Edge> = (0..n - 1)
-        .map(|k| Edge {
-            a: pts[k],
-            b: pts[k + 1],
+        .map(|k| {
+            let (a, b, _, _) = prep.edge(k);
+            Edge { a, b }
         })
         .collect();
-    // Upper spans per edge (ascending), from the top-to-bottom scan.
+    // Upper spans per edge (ascending), from the top-to-bottom scan. For the edge below vertex i,
+    // the hull pairs popped at its bottom end are walked before vertex i pops: when that end is a
+    // hidden run vertex (deeper than `pts[i]` at the same height) they are a prefix of the pairs
+    // `pts[i]` pops (a pair pops for points on its line's side toward `l`), so the walk is amortized.
     let mut upper: Vec<Vec<Span>> = vec![Vec::new(); n - 1];
     let mut stack: Vec<usize> = Vec::with_capacity(n);
     for i in (0..n).rev() {
-        let p = pts[i];
-        let mut popped: Vec<(usize, usize, Sign)> = Vec::new();
-        while let [.., c2, c1] = stack[..] {
-            let s = frame.orient::<K>(p, pts[c1], pts[c2]);
-            if s == Sign::Negative {
-                break;
-            }
-            popped.push((c1, c2, s));
-            stack.pop();
-        }
         if i + 1 < n {
             let e = &edges[i];
             let mut desc: Vec<Span> = Vec::new();
             let mut top = Param::End;
-            let mut cur = if popped.is_empty() {
-                pts[i + 1]
-            } else {
-                pts[popped[0].1]
-            };
-            for &(cm, cm1, s) in popped.iter().skip(1) {
-                if s != Sign::Positive {
-                    break;
+            let mut cur = stack.last().map(|&c| pts[c]);
+            for t in (1..stack.len()).rev() {
+                let (cm, cm1) = (pts[stack[t]], pts[stack[t - 1]]);
+                let sa = frame.orient::<K>(e.a, cm, cm1);
+                if sa == Sign::Negative {
+                    break; // the pair does not pop at the bottom end
                 }
-                let w = Param::Root(pair_form(pts[cm], pts[cm1]));
+                let sb = frame.orient::<K>(e.b, cm, cm1);
+                if sb != Sign::Negative {
+                    cur = Some(cm1); // pops on all of the current range
+                    continue;
+                }
+                if sa == Sign::Zero {
+                    break; // pops at the bottom end only
+                }
+                let w = Param::Root(pair_form(cm, cm1));
                 desc.push(Span {
                     bot: w,
                     top,
-                    tangent: Some(cur),
+                    tangent: cur,
                 });
                 top = w;
-                cur = pts[cm1];
+                cur = Some(cm1);
             }
             desc.push(Span {
                 bot: Param::Start,
                 top,
-                tangent: Some(cur),
+                tangent: cur,
             });
             desc.reverse();
             upper[i] = depth_rule::<K>(e, frame, desc);
         }
+        let p = pts[i];
+        while let [.., c2, c1] = stack[..] {
+            if frame.orient::<K>(p, pts[c1], pts[c2]) == Sign::Negative {
+                break;
+            }
+            stack.pop();
+        }
         stack.push(i);
     }
-    // Lower spans per edge (ascending), from the bottom-to-top scan.
+    // Lower spans per edge (ascending), from the bottom-to-top scan (the mirror image).
     let mut lower: Vec<Vec<Span>> = vec![Vec::new(); n - 1];
     stack.clear();
     for i in 0..n {
-        let p = pts[i];
-        let mut popped: Vec<(usize, usize, Sign)> = Vec::new();
-        while let [.., d2, d1] = stack[..] {
-            let s = frame.orient::<K>(p, pts[d1], pts[d2]);
-            if s == Sign::Positive {
-                break;
-            }
-            popped.push((d1, d2, s));
-            stack.pop();
-        }
         if i >= 1 {
             let e = &edges[i - 1];
             let mut asc: Vec<Span> = Vec::new();
             let mut bot = Param::Start;
-            let mut cur = if popped.is_empty() {
-                pts[i - 1]
-            } else {
-                pts[popped[0].1]
-            };
-            for &(dm, dm1, s) in popped.iter().skip(1) {
-                if s != Sign::Negative {
+            let mut cur = stack.last().map(|&d| pts[d]);
+            for t in (1..stack.len()).rev() {
+                let (dm, dm1) = (pts[stack[t]], pts[stack[t - 1]]);
+                let sb = frame.orient::<K>(e.b, dm, dm1);
+                if sb == Sign::Positive {
                     break;
                 }
-                let w = Param::Root(pair_form(pts[dm], pts[dm1]));
+                let sa = frame.orient::<K>(e.a, dm, dm1);
+                if sa != Sign::Positive {
+                    cur = Some(dm1);
+                    continue;
+                }
+                if sb == Sign::Zero {
+                    break;
+                }
+                let w = Param::Root(pair_form(dm, dm1));
                 asc.push(Span {
                     bot,
                     top: w,
-                    tangent: Some(cur),
+                    tangent: cur,
                 });
                 bot = w;
-                cur = pts[dm1];
+                cur = Some(dm1);
             }
             asc.push(Span {
                 bot,
                 top: Param::End,
-                tangent: Some(cur),
+                tangent: cur,
             });
             lower[i - 1] = depth_rule::<K>(e, frame, asc);
+        }
+        let p = pts[i];
+        while let [.., d2, d1] = stack[..] {
+            if frame.orient::<K>(p, pts[d1], pts[d2]) == Sign::Positive {
+                break;
+            }
+            stack.pop();
         }
         stack.push(i);
     }
@@ -383,7 +396,15 @@ mod tests {
         for n in [2usize, 3, 5, 9, 16, 30] {
             for _ in 0..200 {
                 let pts = chain(&mut rng, n);
-                let ps = pieces::<Exact>(&pts, P);
+                let prep = Prepared {
+                    idx: (0..pts.len()).collect(),
+                    pts: pts.clone(),
+                    rising: true,
+                    first_run: None,
+                    first: pts.iter().enumerate().map(|(i, &v)| (v, i)).collect(),
+                    last: pts.iter().enumerate().map(|(i, &v)| (v, i)).collect(),
+                };
+                let ps = pieces::<Exact>(&prep, P);
                 // Pieces are in order along the chain and well formed.
                 for w in ps.windows(2) {
                     assert!(w[0].edge <= w[1].edge);

@@ -45,15 +45,6 @@ impl Cand {
     }
 }
 
-/// The caller's edge index of the prepared edge `k`.
-fn caller_edge(pp: &Prepared, k: usize) -> usize {
-    if pp.rising {
-        pp.idx[k + 1] - 1
-    } else {
-        pp.idx[k + 1]
-    }
-}
-
 /// The best candidate of the CVE search for the edges of `edges` against the vertices of `verts`.
 fn cve<K: Kernel>(m: &CveMatrix<K>, edges: &Prepared, p_side: bool) -> Option<Cand> {
     let minima = row_minima_by(m, compare_edge_entries::<K>);
@@ -73,20 +64,21 @@ fn cve<K: Kernel>(m: &CveMatrix<K>, edges: &Prepared, p_side: bool) -> Option<Ca
     let (i, j, _) = best?;
     let k = m.row_edge(i);
     let col = m.column(j);
+    let (a, b, ia, ib) = edges.edge(k);
     Some(Cand::Ve {
         v: col.pt,
         j: col.idx,
-        a: edges.pts[k],
-        ia: edges.idx[k],
-        b: edges.pts[k + 1],
-        ib: edges.idx[k + 1],
-        edge: caller_edge(edges, k),
+        a,
+        ia,
+        b,
+        ib,
+        edge: edges.caller_edge(k),
         p_side,
     })
 }
 
 /// The separation `σ(P, Q)` of two polygonal chains `p` and `q` separated by the line through `a`
-/// and `b` and strictly monotone along it, with a realizing pair of points and their features in
+/// and `b` and monotone along it, with a realizing pair of points and their features in
 /// the caller's indices (Amato 1992, section 3, Theorem 2; SMAWK: Aggarwal, Klawe, Moran, Shor,
 /// Wilber 1987).
 ///
@@ -102,8 +94,9 @@ fn cve<K: Kernel>(m: &CveMatrix<K>, edges: &Prepared, p_side: bool) -> Option<Ca
 /// `O(n_p + n_q)` time and predicate calls.
 ///
 /// # Errors
-/// Those of [`closest_visible_vertices`](crate::closest_visible_vertices), and
-/// [`SeparationError::PerpendicularEdge`] for an edge perpendicular to the line.
+/// Those of [`closest_visible_vertices`](crate::closest_visible_vertices). Edges perpendicular to the
+/// line are accepted: their points other than the nearest vertex are not perpendicularly visible, and
+/// the adjacent edges end at the hidden vertices of the run.
 ///
 /// # Examples
 /// ```
@@ -130,11 +123,6 @@ pub fn separation_of_chains<K: Kernel>(
     let frames = validate::<K>(p, q, a, b)?;
     let pp = prepare_monotone::<K>(p, frames.p, Chain::P)?;
     let qq = prepare_monotone::<K>(q, frames.q, Chain::Q)?;
-    for (chain, prep) in [(Chain::P, &pp), (Chain::Q, &qq)] {
-        if let Some(index) = prep.first_run {
-            return Err(SeparationError::PerpendicularEdge { chain, index });
-        }
-    }
     let pa = apexes::<K>(&pp, frames.p);
     let qa = apexes::<K>(&qq, frames.q);
     let cvv = CvvMatrix::<K>::from_parts(frames, &pp, &qq, pa.clone(), qa.clone());
@@ -142,12 +130,12 @@ pub fn separation_of_chains<K: Kernel>(
         let (r, c) = cvv.apexes_at(i, j);
         Cand::Vv(r.pt, r.idx, c.pt, c.idx)
     });
-    let p_pieces = pieces::<K>(&pp.pts, frames.p);
-    let q_pieces = pieces::<K>(&qq.pts, frames.q);
+    let p_pieces = pieces::<K>(&pp, frames.p);
+    let q_pieces = pieces::<K>(&qq, frames.q);
     let stats_pieces = (p_pieces.len(), q_pieces.len());
-    let m_pq = CveMatrix::<K>::build(frames.p, frames.q, pp.pts.clone(), p_pieces, qa);
+    let m_pq = CveMatrix::<K>::build(frames.p, frames.q, real_edges(&pp), p_pieces, qa);
     let pe_qv = cve(&m_pq, &pp, true);
-    let m_qp = CveMatrix::<K>::build(frames.q, frames.p, qq.pts.clone(), q_pieces, pa);
+    let m_qp = CveMatrix::<K>::build(frames.q, frames.p, real_edges(&qq), q_pieces, pa);
     let qe_pv = cve(&m_qp, &qq, false);
     let mut best: Option<Cand> = None;
     for c in [vv, pe_qv, qe_pv].into_iter().flatten() {
@@ -165,6 +153,16 @@ pub fn separation_of_chains<K: Kernel>(
             cve_entries_evaluated: m_pq.lookups() + m_qp.lookups(),
         },
     })
+}
+
+/// The real edges of a prepared chain, between consecutive heights.
+pub(crate) fn real_edges(pp: &Prepared) -> Vec<(DVec2, DVec2)> {
+    (0..pp.pts.len().saturating_sub(1))
+        .map(|k| {
+            let (a, b, _, _) = pp.edge(k);
+            (a, b)
+        })
+        .collect()
 }
 
 /// The realizing points and caller features of a candidate.

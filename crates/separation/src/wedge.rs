@@ -212,6 +212,8 @@ mod tests {
                     pts: pts.clone(),
                     rising: true,
                     first_run: None,
+                    first: pts.iter().enumerate().map(|(i, &v)| (v, i)).collect(),
+                    last: pts.iter().enumerate().map(|(i, &v)| (v, i)).collect(),
                 };
                 let kept: Vec<usize> = apexes::<Exact>(&prep, P).iter().map(|a| a.idx).collect();
                 let up = upper_tangents::<Exact>(&pts, P);

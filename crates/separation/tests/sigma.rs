@@ -20,12 +20,10 @@ fn oracle_feature(f: Feature) -> polydist_oracle::Feature {
     }
 }
 
-/// `false` when the case has an edge perpendicular to the line (not accepted yet).
+/// Checks one case (σ, features, matrices); returns `true` so call sites can count checked cases.
 fn agree<K: Kernel>(c: &Case, check_matrices: bool) -> bool {
-    let got = match separation_of_chains::<K>(&c.p, &c.q, c.a, c.b) {
-        Err(SeparationError::PerpendicularEdge { .. }) => return false,
-        r => r.unwrap_or_else(|e| panic!("{}: {e}", c.name)),
-    };
+    let got = separation_of_chains::<K>(&c.p, &c.q, c.a, c.b)
+        .unwrap_or_else(|e| panic!("{}: {e}", c.name));
     let exact = chain_distance(&c.p, &c.q);
     let fp = oracle_feature(got.pair.feature_p);
     let fq = oracle_feature(got.pair.feature_q);
@@ -197,22 +195,54 @@ fn nearly_touching_and_degenerate() {
 }
 
 #[test]
-fn perpendicular_edges_are_a_typed_error() {
+fn perpendicular_edges() {
     use glam::DVec2;
     let v = DVec2::new;
-    let r = separation_of_chains::<Robust>(
-        &[v(1.0, 0.0), v(2.0, 0.0), v(1.0, 1.0)],
-        &[v(-1.0, 0.0)],
-        v(0.0, 0.0),
-        v(0.0, 1.0),
-    );
-    assert_eq!(
-        r.unwrap_err(),
-        SeparationError::PerpendicularEdge {
-            chain: polydist_separation::Chain::P,
-            index: 1
-        }
-    );
+    // Runs perpendicular to the line, walked toward and away from it, at both ends and inside.
+    let cases = [
+        (
+            vec![v(1.0, 0.0), v(2.0, 0.0), v(1.0, 1.0)],
+            vec![v(-1.0, 0.0)],
+        ),
+        (
+            vec![
+                v(3.0, 0.0),
+                v(1.0, 0.0),
+                v(4.0, 1.0),
+                v(2.0, 1.0),
+                v(1.5, 1.0),
+                v(3.0, 2.0),
+            ],
+            vec![v(-1.0, 0.5), v(-0.5, 1.2), v(-2.0, 2.0)],
+        ),
+        (
+            vec![
+                v(1.0, 0.0),
+                v(5.0, 1.0),
+                v(2.0, 1.0),
+                v(3.0, 3.0),
+                v(6.0, 3.0),
+            ],
+            vec![
+                v(-3.0, 0.0),
+                v(-1.0, 1.0),
+                v(-4.0, 1.0),
+                v(-0.5, 2.5),
+                v(-0.5, 3.5),
+            ],
+        ),
+    ];
+    for (p, q) in cases {
+        let c = Case {
+            p,
+            q,
+            a: v(0.0, 0.0),
+            b: v(0.0, 1.0),
+            name: "perpendicular".into(),
+        };
+        assert!(agree::<Robust>(&c, true));
+        assert!(agree::<Exact>(&c, true));
+    }
 }
 
 /// Larger random chains with non-lattice coordinates (uniform doubles, some far from the origin):
