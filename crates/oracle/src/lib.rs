@@ -68,6 +68,7 @@ mod exact;
 mod generators;
 mod hausdorff;
 mod rounding;
+mod separation;
 mod shape;
 
 pub use crate::contact::{Contact, contact_status_convex, contact_status_simple};
@@ -100,4 +101,5 @@ pub use crate::hausdorff::{
 pub use crate::rounding::{
     sqrt_nearest, step_ulps, to_f64_nearest, ulp_distance, ulps_error, ulps_error_sqrt,
 };
+pub use crate::separation::{chain_distance, closest_visible_vertices_exact, open_segment_meets};
 pub use crate::shape::{is_convex, is_simple, is_strictly_convex, signed_area};

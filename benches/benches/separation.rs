@@ -1,0 +1,161 @@
+//! Separation of two chains separated by a line (Amato 1992, section 3): polydist's `O(n)` solver
+//! (CVV + two CVE searches with SMAWK) beside its brute-force twin and parry2d-f64's `Polyline`
+//! (BVH) distance, on two chains monotone along the separating line `x = 0`, `N` vertices in all:
+//!
+//! - `separation/random`: random heights and depths (1 … 10 from the line);
+//! - `separation/combs`: two saw-tooth combs whose tips face each other, interleaved, one unit
+//!   from the line each (every tooth is a candidate).
+//!
+//! Series, per `N` in 64 … 131,072:
+//! - `sigma_fast`, `sigma_robust`, `sigma_exact`: `separation_of_chains::<K>` (Exact up to 4,096);
+//! - `cvv_robust`: `closest_visible_vertices::<Robust>` alone (the vertex part);
+//! - `brute_robust`: `separation_brute::<Robust>` (`Θ(n_p n_q)`, up to 4,096);
+//! - `parry_query`: `query::distance` between two prebuilt `Polyline`s (BVH built outside the loop);
+//! - `parry_build_query`: building both polylines (their BVHs) and the query, what a one-shot
+//!   query pays.
+//!
+//! Before timing, parry's and the brute force's distances are checked against polydist's (relative
+//! 1e-9). Run: `cargo bench -p polydist-benches --bench separation`. Figures only.
+
+use std::hint::black_box;
+use std::time::Duration;
+
+use criterion::{BenchmarkGroup, BenchmarkId, Criterion, criterion_main, measurement::WallTime};
+use glam::DVec2;
+use parry2d_f64::math::{Pose, Vector};
+use parry2d_f64::query;
+use parry2d_f64::shape::Polyline;
+use polydist_oracle::SplitMix64;
+use polydist_predicates::{Exact, Fast, Kernel, Robust};
+use polydist_separation::{closest_visible_vertices, separation_brute, separation_of_chains};
+
+/// Total vertices.
+const SIZES: [usize; 5] = [64, 512, 4096, 32_768, 131_072];
+const BRUTE_MAX: usize = 4096;
+const EXACT_MAX: usize = 4096;
+
+fn configure(group: &mut BenchmarkGroup<'_, WallTime>) {
+    group
+        .sample_size(10)
+        .warm_up_time(Duration::from_millis(300))
+        .measurement_time(Duration::from_millis(1500));
+}
+
+/// Chains `p` (x > 0) and `q` (x < 0), strictly increasing in height.
+struct Case {
+    p: Vec<DVec2>,
+    q: Vec<DVec2>,
+}
+
+fn side(rng: &mut SplitMix64, n: usize, sign: f64) -> Vec<DVec2> {
+    let mut ys: Vec<f64> = (0..n).map(|_| rng.unit_f64() * n as f64).collect();
+    ys.sort_by(f64::total_cmp);
+    ys.dedup();
+    ys.into_iter()
+        .map(|y| DVec2::new(sign * (1.0 + 9.0 * rng.unit_f64()), y))
+        .collect()
+}
+
+fn random(n: usize) -> Case {
+    let mut rng = SplitMix64::new(0x5e9a ^ n as u64);
+    Case {
+        p: side(&mut rng, n / 2, 1.0),
+        q: side(&mut rng, n / 2, -1.0),
+    }
+}
+
+fn combs(n: usize) -> Case {
+    let teeth = n / 4;
+    let (mut p, mut q) = (Vec::new(), Vec::new());
+    for k in 0..teeth {
+        let y = 4.0 * k as f64;
+        p.push(DVec2::new(11.0, y));
+        p.push(DVec2::new(1.0, y + 2.0));
+        q.push(DVec2::new(-11.0, y + 2.0));
+        q.push(DVec2::new(-1.0, y + 4.0));
+    }
+    Case { p, q }
+}
+
+fn polyline(c: &[DVec2]) -> Polyline {
+    Polyline::new(c.iter().map(|v| Vector::new(v.x, v.y)).collect(), None)
+}
+
+fn parry(p: &Polyline, q: &Polyline) -> f64 {
+    let id = Pose::identity();
+    query::distance(&id, p, &id, q).expect("supported")
+}
+
+fn sigma<K: Kernel>(c: &Case) -> f64 {
+    separation_of_chains::<K>(&c.p, &c.q, DVec2::ZERO, DVec2::Y)
+        .expect("valid input")
+        .pair
+        .distance
+}
+
+fn run(c: &mut Criterion, name: &str, make: fn(usize) -> Case) {
+    let mut group = c.benchmark_group(name);
+    configure(&mut group);
+    for n in SIZES {
+        let case = make(n);
+        let (pp, pq) = (polyline(&case.p), polyline(&case.q));
+        let d = sigma::<Robust>(&case);
+        let rel = |x: f64| ((x - d) / d).abs();
+        assert!(rel(parry(&pp, &pq)) < 1e-9, "{name} n={n}: parry disagrees");
+        if n <= BRUTE_MAX {
+            let b = separation_brute::<Robust>(&case.p, &case.q)
+                .expect("valid")
+                .distance;
+            assert!(rel(b) < 1e-12, "{name} n={n}: brute disagrees");
+        }
+        group.bench_with_input(BenchmarkId::new("sigma_fast", n), &case, |b, c| {
+            b.iter(|| sigma::<Fast>(black_box(c)))
+        });
+        group.bench_with_input(BenchmarkId::new("sigma_robust", n), &case, |b, c| {
+            b.iter(|| sigma::<Robust>(black_box(c)))
+        });
+        if n <= EXACT_MAX {
+            group.bench_with_input(BenchmarkId::new("sigma_exact", n), &case, |b, c| {
+                b.iter(|| sigma::<Exact>(black_box(c)))
+            });
+        }
+        group.bench_with_input(BenchmarkId::new("cvv_robust", n), &case, |b, c| {
+            b.iter(|| {
+                closest_visible_vertices::<Robust>(black_box(&c.p), &c.q, DVec2::ZERO, DVec2::Y)
+                    .expect("valid")
+                    .pair
+                    .distance
+            })
+        });
+        if n <= BRUTE_MAX {
+            group.bench_with_input(BenchmarkId::new("brute_robust", n), &case, |b, c| {
+                b.iter(|| {
+                    separation_brute::<Robust>(black_box(&c.p), &c.q)
+                        .expect("valid")
+                        .distance
+                })
+            });
+        }
+        group.bench_with_input(
+            BenchmarkId::new("parry_query", n),
+            &(pp, pq),
+            |b, (p, q)| b.iter(|| parry(black_box(p), black_box(q))),
+        );
+        group.bench_with_input(BenchmarkId::new("parry_build_query", n), &case, |b, c| {
+            b.iter(|| {
+                let (p, q) = (polyline(black_box(&c.p)), polyline(&c.q));
+                parry(&p, &q)
+            })
+        });
+    }
+    group.finish();
+}
+
+fn benches() {
+    let mut c = Criterion::default().configure_from_args();
+    run(&mut c, "separation/random", random);
+    run(&mut c, "separation/combs", combs);
+    c.final_summary();
+}
+
+criterion_main!(benches);

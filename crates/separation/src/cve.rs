@@ -1,0 +1,509 @@
+//! CVE of two chains separated by a line and monotone along it (Amato 1992, section 3): the
+//! edges of one chain cut into pieces with constant `h()`, `l()` and `α ≥ 90°`, the regions `R()` of
+//! pieces and of the other chain's vertices, and the tagged matrix `M` searched with SMAWK.
+
+use core::cell::Cell;
+use core::cmp::Ordering;
+use core::marker::PhantomData;
+
+use glam::DVec2;
+use monotone_minima::Matrix;
+use polydist_predicates::{Dist2, Kernel, Sign};
+
+use crate::chain::{prepare_monotone, validate};
+use crate::error::{Chain, SeparationError};
+use crate::frame::Frame;
+use crate::param::{Affine, Edge, EdgePoint, Param};
+use crate::pieces::{Piece, pieces};
+use crate::sigma::real_edges;
+use crate::wedge::{Apex, apexes};
+
+/// An entry of the CVE matrix: like [`MatrixEntry`](crate::MatrixEntry), with the distance from
+/// the column vertex `q` to the row piece's whole edge `[a, b]` (a true distance between the chains,
+/// never below σ; equal to the piece's distance when the piece realizes σ).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum EdgeEntry {
+    /// `d(q, [a, b])`.
+    Dist {
+        /// The column vertex.
+        q: DVec2,
+        /// The row edge's start.
+        a: DVec2,
+        /// The row edge's end.
+        b: DVec2,
+    },
+    /// `B + n_q − j`, holding `n_q − j`.
+    Penalty(usize),
+    /// Not a candidate.
+    Infinity,
+}
+
+/// The exact order of [`EdgeEntry`] under `K` (`cmp_dist2`, degree ≤ 6, for two distances).
+#[must_use]
+pub fn compare_edge_entries<K: Kernel>(x: &EdgeEntry, y: &EdgeEntry) -> Ordering {
+    use EdgeEntry::{Dist, Infinity, Penalty};
+    match (x, y) {
+        (Dist { q, a, b }, Dist { q: r, a: c, b: d }) => K::cmp_dist2(
+            Dist2::PointSegment(*q, *a, *b),
+            Dist2::PointSegment(*r, *c, *d),
+        ),
+        (Penalty(s), Penalty(t)) => s.cmp(t),
+        (Infinity, Infinity) => Ordering::Equal,
+        (Dist { .. }, _) | (Penalty(_), Infinity) => Ordering::Less,
+        _ => Ordering::Greater,
+    }
+}
+
+/// A region `R()` bounded by heights: `up`/`down` the points `u^±` (`None`: the row's own end).
+#[derive(Clone, Copy, Debug)]
+struct Band<T> {
+    up: Option<T>,
+    down: Option<T>,
+}
+
+impl<T> Default for Band<T> {
+    fn default() -> Self {
+        Band {
+            up: None,
+            down: None,
+        }
+    }
+}
+
+/// Where the upper cap of a pointer scan lies.
+#[derive(Clone, Copy, Debug)]
+enum Cap {
+    Open,
+    At(EdgePoint),
+    Height(DVec2),
+}
+
+/// The CVE matrix for the edges of one chain (rows: pieces in height order) against the vertices
+/// of the other (columns: the vertices left after Lemmas 2–3, in height order).
+#[derive(Clone, Debug)]
+pub struct CveMatrix<K: Kernel> {
+    fp: Frame,
+    fq: Frame,
+    /// The real edges of the row chain, between consecutive heights.
+    edges: Vec<(DVec2, DVec2)>,
+    pieces: Vec<Piece>,
+    cols: Vec<Apex>,
+    piece_bands: Vec<Band<DVec2>>,
+    col_bands: Vec<Band<EdgePoint>>,
+    lookups: Cell<usize>,
+    kernel: PhantomData<K>,
+}
+
+impl<K: Kernel> CveMatrix<K> {
+    /// Validates the input and builds the matrix for the edges of `p` (rows) against the vertices
+    /// of `q` (columns), as [`separation_of_chains`](crate::separation_of_chains) does. `O(n_p + n_q)`.
+    ///
+    /// # Errors
+    /// See [`separation_of_chains`](crate::separation_of_chains).
+    pub fn new(p: &[DVec2], q: &[DVec2], a: DVec2, b: DVec2) -> Result<Self, SeparationError> {
+        let frames = validate::<K>(p, q, a, b)?;
+        let pp = prepare_monotone::<K>(p, frames.p, Chain::P)?;
+        let qq = prepare_monotone::<K>(q, frames.q, Chain::Q)?;
+        let cols = apexes::<K>(&qq, frames.q);
+        let ps = pieces::<K>(&pp, frames.p);
+        Ok(Self::build(frames.p, frames.q, real_edges(&pp), ps, cols))
+    }
+
+    pub(crate) fn build(
+        fp: Frame,
+        fq: Frame,
+        edges: Vec<(DVec2, DVec2)>,
+        pieces: Vec<Piece>,
+        cols: Vec<Apex>,
+    ) -> Self {
+        let mut m = CveMatrix {
+            fp,
+            fq,
+            edges,
+            pieces,
+            cols,
+            piece_bands: Vec::new(),
+            col_bands: Vec::new(),
+            lookups: Cell::new(0),
+            kernel: PhantomData,
+        };
+        m.piece_bands = m.piece_regions();
+        m.col_bands = m.column_regions();
+        m
+    }
+
+    /// The edge of row `i`, as the prepared vertex index of its lower end.
+    pub(crate) fn row_edge(&self, i: usize) -> usize {
+        self.pieces[i].edge
+    }
+
+    /// The column apex `j`.
+    pub(crate) fn column(&self, j: usize) -> &Apex {
+        &self.cols[j]
+    }
+
+    /// How many entries have been looked up.
+    #[must_use]
+    pub fn lookups(&self) -> usize {
+        self.lookups.get()
+    }
+
+    fn edge(&self, k: usize) -> Edge {
+        Edge {
+            a: self.edges[k].0,
+            b: self.edges[k].1,
+        }
+    }
+
+    /// `sign(g)` at a point of this chain.
+    fn eval(&self, g: &Affine, x: &EdgePoint) -> Sign {
+        self.edge(x.edge).eval::<K>(g, &x.param)
+    }
+
+    /// `H(x)` against `H(t)` for a point `x` of this chain and an input point `t`.
+    fn cmp_height_with(&self, x: &EdgePoint, t: DVec2) -> Ordering {
+        self.eval(&self.fp.height_minus(t), x).to_ordering()
+    }
+
+    fn is_end(&self, x: &EdgePoint, at_end: bool) -> bool {
+        self.edge(x.edge).is_end::<K>(&x.param, at_end)
+    }
+
+    /// Compares the heights of two points of this chain. Heights increase along the rows' edges;
+    /// the end of one edge and the start of the next are at the same height (the same vertex, or
+    /// the two ends of a run perpendicular to the line) and compare equal.
+    fn cmp_points(&self, x: &EdgePoint, y: &EdgePoint) -> Ordering {
+        match x.edge.cmp(&y.edge) {
+            Ordering::Equal => self.edge(x.edge).cmp::<K>(&x.param, &y.param),
+            Ordering::Less => {
+                if x.edge + 1 == y.edge && self.is_end(x, true) && self.is_end(y, false) {
+                    Ordering::Equal
+                } else {
+                    Ordering::Less
+                }
+            }
+            Ordering::Greater => self.cmp_points(y, x).reverse(),
+        }
+    }
+
+    fn bot(&self, pc: &Piece) -> EdgePoint {
+        EdgePoint {
+            edge: pc.edge,
+            param: pc.bot,
+        }
+    }
+
+    fn top(&self, pc: &Piece) -> EdgePoint {
+        EdgePoint {
+            edge: pc.edge,
+            param: pc.top,
+        }
+    }
+
+    /// `u` is admissible for the piece: `u ∈ W(pc)` (open wedge with apexes at the piece's ends) and
+    /// the piece's top (`up`) or bottom end lies in `W(u)`.
+    fn admissible_for_piece(&self, pc: &Piece, u: &Apex, up: bool) -> bool {
+        let (fp, fq) = (self.fp, self.fq);
+        let (top, bot) = (self.top(pc), self.bot(pc));
+        let e = self.edge(pc.edge);
+        // When the ray's apex is its own tangent point (the piece reaches the edge's end and the
+        // tangent is that end), the ray runs along the edge.
+        let below_upper = match pc.hi {
+            Some(h) if h == e.b && self.is_end(&top, true) => {
+                fp.orient::<K>(e.a, e.b, u.pt) == Sign::Positive
+            }
+            Some(h) => self.eval(&fp.orient_x_first(h, u.pt), &top) == Sign::Positive,
+            None => self.eval(&fp.depth_minus(u.pt), &top) == Sign::Positive,
+        };
+        if !below_upper {
+            return false;
+        }
+        let above_lower = match pc.lo {
+            Some(l) if l == e.a && self.is_end(&bot, false) => {
+                fp.orient::<K>(e.b, e.a, u.pt) == Sign::Negative
+            }
+            Some(l) => self.eval(&fp.orient_x_first(l, u.pt), &bot) == Sign::Negative,
+            None => self.eval(&fp.depth_minus(u.pt), &bot) == Sign::Positive,
+        };
+        if !above_lower {
+            return false;
+        }
+        let v = if up { top } else { bot };
+        let in_upper = match u.hi {
+            Some(hu) => self.eval(&fq.orient_x_last(u.pt, hu), &v) == Sign::Positive,
+            None => self.eval(&fq.depth_minus(u.pt), &v) == Sign::Negative,
+        };
+        in_upper
+            && match u.lo {
+                Some(lu) => self.eval(&fq.orient_x_last(u.pt, lu), &v) == Sign::Negative,
+                None => self.eval(&fq.depth_minus(u.pt), &v) == Sign::Negative,
+            }
+    }
+
+    /// `R(e_i)` for every piece: `u_i^+` the highest column vertex with
+    /// `H(v_i^+) ≤ H(u) ≤ H(u_{i+1}^+)`, admissible; `u_i^-` symmetrically. One pointer per scan.
+    fn piece_regions(&self) -> Vec<Band<DVec2>> {
+        let (ps, us) = (&self.pieces, &self.cols);
+        let mut out = vec![Band::default(); ps.len()];
+        let mut k = us.len();
+        for (i, pc) in ps.iter().enumerate().rev() {
+            let top = self.top(pc);
+            while k > 0 {
+                let u = &us[k - 1];
+                if self.cmp_height_with(&top, u.pt) == Ordering::Greater {
+                    break;
+                }
+                if self.admissible_for_piece(pc, u, true) {
+                    out[i].up = Some(u.pt);
+                    break;
+                }
+                k -= 1;
+            }
+            if out[i].up.is_none()
+                && k < us.len()
+                && self.cmp_height_with(&top, us[k].pt) == Ordering::Equal
+            {
+                k += 1;
+            }
+        }
+        let mut k = 0;
+        for (i, pc) in ps.iter().enumerate() {
+            let bot = self.bot(pc);
+            while k < us.len() {
+                let u = &us[k];
+                if self.cmp_height_with(&bot, u.pt) == Ordering::Less {
+                    break;
+                }
+                if self.admissible_for_piece(pc, u, false) {
+                    out[i].down = Some(u.pt);
+                    break;
+                }
+                k += 1;
+            }
+            if out[i].down.is_none()
+                && k > 0
+                && self.cmp_height_with(&bot, us[k - 1].pt) == Ordering::Equal
+            {
+                k -= 1;
+            }
+        }
+        out
+    }
+
+    /// The highest (`up`) or lowest point of piece `pc` that is admissible for the column vertex
+    /// `q`: height between `H(q)` and the cap, in the closed `W(q)`, and `q` in the closed wedge of
+    /// the point. Each condition is an affine sign along the edge, so the admissible set is an
+    /// interval whose ends are roots; `O(1)` predicates of degree ≤ 6.
+    fn admissible_end(&self, pc: &Piece, q: &Apex, cap: Cap, up: bool) -> Option<Param> {
+        let (fp, fq) = (self.fp, self.fq);
+        let e = self.edge(pc.edge);
+        let (mut lb, mut ub) = (pc.bot, pc.top);
+        // Every condition as g ≥ 0.
+        let hq = fp.height_minus(q.pt);
+        let mut conds: [Option<Affine>; 6] = [None; 6];
+        conds[0] = Some(if up { hq } else { hq.negated() });
+        conds[1] = match cap {
+            Cap::Height(t) => {
+                let g = fp.height_minus(t);
+                Some(if up { g.negated() } else { g })
+            }
+            _ => None,
+        };
+        conds[2] = Some(match q.hi {
+            Some(h) => fq.orient_x_last(q.pt, h),
+            None => fq.depth_minus(q.pt).negated(),
+        });
+        conds[3] = Some(match q.lo {
+            Some(l) => fq.orient_x_last(q.pt, l).negated(),
+            None => fq.depth_minus(q.pt).negated(),
+        });
+        conds[4] = Some(match pc.hi {
+            Some(h) => fp.orient_x_first(h, q.pt),
+            None => fp.depth_minus(q.pt),
+        });
+        conds[5] = Some(match pc.lo {
+            Some(l) => fp.orient_x_first(l, q.pt).negated(),
+            None => fp.depth_minus(q.pt),
+        });
+        if let Cap::At(c) = cap {
+            let bound = if up { &mut ub } else { &mut lb };
+            if c.edge == pc.edge {
+                *bound = c.param;
+            } else {
+                // The cap is on another edge: it bounds this piece only if it is the piece's
+                // far end (then the admissible set is that single point).
+                let (near, far) = if up {
+                    (self.bot(pc), self.top(pc))
+                } else {
+                    (self.top(pc), self.bot(pc))
+                };
+                let beyond = |o: Ordering| {
+                    if up {
+                        o == Ordering::Greater
+                    } else {
+                        o == Ordering::Less
+                    }
+                };
+                if beyond(self.cmp_points(&far, &c)) {
+                    if self.cmp_points(&near, &c) == Ordering::Equal {
+                        *bound = near.param;
+                    } else {
+                        return None;
+                    }
+                }
+            }
+        }
+        for g in conds.iter().flatten() {
+            let (gb, gt) = (e.eval::<K>(g, &pc.bot), e.eval::<K>(g, &pc.top));
+            let ok = |s: Sign| s != Sign::Negative;
+            match (ok(gb), ok(gt)) {
+                (true, true) => {}
+                (false, false) => return None,
+                (false, true) => {
+                    // A zero at the top end is the top itself: no new root.
+                    let r = if gt == Sign::Zero {
+                        pc.top
+                    } else {
+                        Param::Root(*g)
+                    };
+                    if e.cmp::<K>(&r, &lb) == Ordering::Greater {
+                        lb = r;
+                    }
+                }
+                (true, false) => {
+                    let r = if gb == Sign::Zero {
+                        pc.bot
+                    } else {
+                        Param::Root(*g)
+                    };
+                    if e.cmp::<K>(&r, &ub) == Ordering::Less {
+                        ub = r;
+                    }
+                }
+            }
+        }
+        if e.cmp::<K>(&lb, &ub) == Ordering::Greater {
+            None
+        } else if up {
+            Some(ub)
+        } else {
+            Some(lb)
+        }
+    }
+
+    /// `R(q_j)` for every column vertex: `u_j^+` the highest admissible point of the pieces between
+    /// `H(q_j)` and `H(u_{j+1}^+)`, by one pointer over the pieces moving down (and one moving up
+    /// for `u_j^-`); each column stops on at most one piece it does not pass.
+    fn column_regions(&self) -> Vec<Band<EdgePoint>> {
+        let (ps, qs) = (&self.pieces, &self.cols);
+        let mut out = vec![Band::default(); qs.len()];
+        let mut k = ps.len();
+        let mut cap = Cap::Open;
+        for (j, q) in qs.iter().enumerate().rev() {
+            while k > 0 {
+                let pc = &ps[k - 1];
+                let bot = self.bot(pc);
+                let above_cap = match cap {
+                    Cap::Open => false,
+                    Cap::At(c) => self.cmp_points(&bot, &c) == Ordering::Greater,
+                    Cap::Height(t) => self.cmp_height_with(&bot, t) == Ordering::Greater,
+                };
+                if above_cap {
+                    k -= 1;
+                    continue;
+                }
+                if let Some(t) = self.admissible_end(pc, q, cap, true) {
+                    out[j].up = Some(EdgePoint {
+                        edge: pc.edge,
+                        param: t,
+                    });
+                    break;
+                }
+                if self.cmp_height_with(&bot, q.pt) == Ordering::Greater {
+                    k -= 1;
+                } else {
+                    break;
+                }
+            }
+            cap = out[j].up.map_or(Cap::Height(q.pt), Cap::At);
+        }
+        let mut k = 0;
+        let mut cap = Cap::Open;
+        for (j, q) in qs.iter().enumerate() {
+            while k < ps.len() {
+                let pc = &ps[k];
+                let top = self.top(pc);
+                let below_cap = match cap {
+                    Cap::Open => false,
+                    Cap::At(c) => self.cmp_points(&top, &c) == Ordering::Less,
+                    Cap::Height(t) => self.cmp_height_with(&top, t) == Ordering::Less,
+                };
+                if below_cap {
+                    k += 1;
+                    continue;
+                }
+                if let Some(t) = self.admissible_end(pc, q, cap, false) {
+                    out[j].down = Some(EdgePoint {
+                        edge: pc.edge,
+                        param: t,
+                    });
+                    break;
+                }
+                if self.cmp_height_with(&top, q.pt) == Ordering::Less {
+                    k += 1;
+                } else {
+                    break;
+                }
+            }
+            cap = out[j].down.map_or(Cap::Height(q.pt), Cap::At);
+        }
+        out
+    }
+}
+
+impl<K: Kernel> Matrix for CveMatrix<K> {
+    type Entry = EdgeEntry;
+
+    fn rows(&self) -> usize {
+        self.pieces.len()
+    }
+
+    fn columns(&self) -> usize {
+        self.cols.len()
+    }
+
+    fn entry(&self, i: usize, j: usize) -> EdgeEntry {
+        self.lookups.set(self.lookups.get() + 1);
+        let pc = &self.pieces[i];
+        let q = self.cols[j].pt;
+        let (pb, cb) = (&self.piece_bands[i], &self.col_bands[j]);
+        let (bot, top) = (self.bot(pc), self.top(pc));
+        let bot_vs_q = self.cmp_height_with(&bot, q);
+        let top_vs_q = self.cmp_height_with(&top, q);
+        let q_below = match pb.down {
+            Some(u) => self.fq.cmp_height::<K>(q, u) == Ordering::Less,
+            None => bot_vs_q == Ordering::Greater,
+        };
+        let piece_above = match cb.up {
+            Some(c) => self.cmp_points(&bot, &c) == Ordering::Greater,
+            None => bot_vs_q == Ordering::Greater,
+        };
+        if q_below || piece_above {
+            return EdgeEntry::Penalty(self.cols.len() - j);
+        }
+        let q_above = match pb.up {
+            Some(u) => self.fq.cmp_height::<K>(q, u) == Ordering::Greater,
+            None => top_vs_q == Ordering::Less,
+        };
+        let piece_below = match cb.down {
+            Some(c) => self.cmp_points(&top, &c) == Ordering::Less,
+            None => top_vs_q == Ordering::Less,
+        };
+        if q_above || piece_below {
+            EdgeEntry::Infinity
+        } else {
+            let e = self.edge(pc.edge);
+            EdgeEntry::Dist { q, a: e.a, b: e.b }
+        }
+    }
+}

@@ -1,0 +1,79 @@
+//! Why an input was rejected: [`SeparationError`].
+
+/// Which of the two input chains an error is about.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Chain {
+    /// The first chain, `P`.
+    P,
+    /// The second chain, `Q`.
+    Q,
+}
+
+impl core::fmt::Display for Chain {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str(match self {
+            Chain::P => "P",
+            Chain::Q => "Q",
+        })
+    }
+}
+
+/// Why two chains and a line were rejected, or why no answer could be given.
+///
+/// Every index is the **caller's** index into the slice it passed. The checks run in the order of the
+/// variants below; the first failing one is reported.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, thiserror::Error)]
+pub enum SeparationError {
+    /// A chain has no vertices.
+    #[error("chain {chain} has no vertices")]
+    EmptyChain {
+        /// The empty chain.
+        chain: Chain,
+    },
+    /// A coordinate is NaN, infinite, or beyond
+    /// [`MAX_COORDINATE`](polydist_predicates::MAX_COORDINATE) in magnitude.
+    #[error("vertex {index} of chain {chain} has a non-finite or out-of-range coordinate")]
+    InvalidCoordinate {
+        /// The chain holding the vertex.
+        chain: Chain,
+        /// The caller's index of the first offending vertex.
+        index: usize,
+    },
+    /// A point of the separating line is NaN, infinite or out of range.
+    #[error("the separating line has a non-finite or out-of-range point")]
+    InvalidLine,
+    /// The two points given for the separating line coincide.
+    #[error("the two points of the separating line coincide")]
+    DegenerateLine,
+    /// Vertex `index` of `chain` lies strictly on the other chain's side of the line (decided
+    /// exactly): the line does not separate the chains.
+    #[error("vertex {index} of chain {chain} is strictly on the wrong side of the line")]
+    NotSeparated {
+        /// The chain holding the vertex.
+        chain: Chain,
+        /// The caller's index of the first vertex found on the wrong side.
+        index: usize,
+    },
+    /// Both chains have a vertex on the separating line. The line then does not decide on which side
+    /// a point of the line belongs, and the perpendicular-visibility wedges of the two chains are
+    /// ambiguous there; pass a line that at most one of the chains touches.
+    #[error("both chains touch the separating line; at most one may")]
+    BothChainsTouchLine,
+    /// The chain is not monotone with respect to the separating line (its vertices' heights along
+    /// the line neither never decrease nor never increase), or it doubles back on itself within a
+    /// run of vertices at equal height. The envelope step of Lemma 2 for general chains is not
+    /// implemented yet: see `docs/algorithms/separation.md`.
+    #[error("chain {chain} is not monotone along the separating line at vertex {index}")]
+    NotMonotone {
+        /// The chain.
+        chain: Chain,
+        /// The caller's index of the first vertex where monotonicity fails.
+        index: usize,
+    },
+    /// The search found no admissible vertex pair. With an exact kernel this cannot happen (it would
+    /// be a bug); with the `Fast` kernel inconsistent decisions can cause it.
+    #[error(
+        "inconsistent decisions: no candidate pair survived (only possible with the Fast kernel)"
+    )]
+    Inconsistent,
+}

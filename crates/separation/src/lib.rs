@@ -1,0 +1,50 @@
+//! Separation of two polygonal chains separated by a line (Amato 1992, section 3), with exact
+//! predicates and SMAWK.
+//!
+//! # Status
+//! This crate holds the parts of N. M. Amato, "An optimal algorithm for determining the separation
+//! of two nonintersecting simple polygons" (UIUC report UILU-ENG-92-2248, 1992) built so far:
+//!
+//! | item | what it is | status |
+//! |---|---|---|
+//! | [`separation_of_chains`] | σ of two chains separated by a line and monotone along it (edges perpendicular to it allowed), with a realizing pair and caller features: CVV + CVE (both ways), `O(n_p + n_q)` | done; agrees with the exact oracle, every test matrix checked for total monotonicity |
+//! | [`closest_visible_vertices`] | CVV of two chains separated by a line and monotone along it (edges perpendicular to the line allowed): Lemma 2, `W()` by hull scans, Lemma 3, `R()`, the tagged matrix `M` and SMAWK, `O(n_p + n_q)` | done |
+//! | [`CvvMatrix`], [`CveMatrix`], [`MatrixEntry`], [`EdgeEntry`], [`compare_entries`], [`compare_edge_entries`] | the matrices `M` themselves, for verification with `monotone_minima::check_totally_monotone_by` | done |
+//! | [`closest_visible_vertices_brute`], [`separation_brute`] | brute-force twins (test references, benchmark baselines) | done |
+//! | Lemma 2 for chains that are not monotone along the line (the perpendicular-visibility envelope, shadow points), chains with gaps, lines touched by both chains, the disjoint-hull fast path for polygons, section 2's separators | — | **not done**: see `docs/algorithms/separation.md` |
+//!
+//! The restriction to monotone chains is the setting in which the paper states Lemmas 4–7; general
+//! chains are reduced to it by Lemma 2, the step still missing.
+//!
+//! # Numbers
+//! Every decision is the sign of a polynomial of degree at most 6 in the input coordinates,
+//! decided by the kernel `K`: degree 2 for orientation, dot and cross signs and vertex–vertex
+//! comparisons; 4 for the order of two constructed points on an edge and for the discriminant of
+//! the `α ≥ 90°` arc; 6 for a constructed point against an arc end and for vertex–edge distance
+//! comparisons. Constructed points (edge breakpoints, arc ends, the points `u^±` on edges) are never
+//! rounded to floats for a decision. The matrix
+//! entries are tagged ([`MatrixEntry`]) and compared exactly; no `f64` sentinel is used. Distances
+//! are constructed once the pair is chosen: the exact squared distance rounded once, then its square
+//! root (within 1 ulp).
+#![forbid(unsafe_code)]
+
+mod brute;
+mod chain;
+mod construct;
+mod cve;
+mod cvv;
+mod error;
+mod frame;
+mod param;
+mod pieces;
+mod region;
+mod result;
+mod sigma;
+mod wedge;
+
+pub use brute::{closest_visible_vertices_brute, separation_brute};
+pub use cve::{CveMatrix, EdgeEntry, compare_edge_entries};
+pub use cvv::{CvvMatrix, MatrixEntry, closest_visible_vertices, compare_entries};
+pub use error::{Chain, SeparationError};
+pub use result::{ChainSeparation, ClosestPair, Cvv, CvvStats, SeparationStats};
+pub use sigma::separation_of_chains;

@@ -1,0 +1,473 @@
+//! The partition of the edges of a chain (monotone along the line) into pieces on which
+//! `h()` and `l()` are constant (Amato's Figure 8), and the clipping of each piece to the arc where
+//! `α ≥ 90°` (the disk with diameter `[l, h]`, Figure 5).
+
+use core::cmp::Ordering;
+
+use glam::DVec2;
+use polydist_predicates::{Kernel, Sign};
+
+use crate::chain::Prepared;
+use crate::frame::Frame;
+use crate::param::{Affine, Edge, Param};
+
+/// A piece of edge `edge` (from prepared vertex `edge` to `edge + 1`), from `bot` to `top`, with
+/// constant tangent points `hi = h(x)` and `lo = l(x)` (`None`: the ray is parallel to the line)
+/// and `α(x) ≥ 90°` on all of it.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Piece {
+    pub(crate) edge: usize,
+    pub(crate) bot: Param,
+    pub(crate) top: Param,
+    pub(crate) hi: Option<DVec2>,
+    pub(crate) lo: Option<DVec2>,
+}
+
+/// One interval of an edge with one tangent point.
+#[derive(Clone, Copy, Debug)]
+struct Span {
+    bot: Param,
+    top: Param,
+    tangent: Option<DVec2>,
+}
+
+/// The orientation form whose root on an edge is where the hull pair `(c, c')` stops or starts
+/// being popped: `x ↦ orient(x, c, c')`.
+fn pair_form(c: DVec2, c2: DVec2) -> Affine {
+    Affine {
+        cross: true,
+        c,
+        v0: c,
+        v1: c2,
+        neg: true,
+    }
+}
+
+/// Splits `spans` (with tangent candidates) where the tangent stops being strictly nearer to the
+/// line than the point: `h(x) = t` only where `depth(t) < depth(x)`.
+fn depth_rule<K: Kernel>(e: &Edge, frame: Frame, spans: Vec<Span>) -> Vec<Span> {
+    let mut out = Vec::with_capacity(spans.len() + 1);
+    for s in spans {
+        let Some(t) = s.tangent else {
+            out.push(s);
+            continue;
+        };
+        let g = frame.depth_minus(t);
+        let (gb, gt) = (e.eval::<K>(&g, &s.bot), e.eval::<K>(&g, &s.top));
+        // Split only where the sign strictly changes; a zero at one end is that end itself, and a
+        // single point keeps the tangent of the rest of the piece (it is also a piece end of the
+        // neighbour or a vertex, tested there).
+        match (gb, gt) {
+            (Sign::Positive, Sign::Negative) | (Sign::Negative, Sign::Positive) => {
+                let w = Param::Root(g);
+                let (lower, upper) = if gb == Sign::Positive {
+                    (Some(t), None)
+                } else {
+                    (None, Some(t))
+                };
+                out.push(Span {
+                    bot: s.bot,
+                    top: w,
+                    tangent: lower,
+                });
+                out.push(Span {
+                    bot: w,
+                    top: s.top,
+                    tangent: upper,
+                });
+            }
+            _ if gb == Sign::Positive || gt == Sign::Positive => out.push(s),
+            _ => out.push(Span { tangent: None, ..s }),
+        }
+    }
+    out
+}
+
+/// The pieces of every edge of `pts` (strictly increasing in height), in height order.
+///
+/// Two hull scans as in `wedge::tangents`; when vertex `p_i` pops the hull pairs
+/// `(c_1, c_2), …, (c_r, c_{r+1})` (`c_1 = p_{i+1}`), the edge `(p_i, p_{i+1})` changes tangent where
+/// it crosses the line of each popped pair `m ≥ 2` (Amato's breakpoints; at most one per popped hull
+/// edge, so `O(n)` in all), and where the tangent point's depth is reached. The two partitions are
+/// merged and each piece is clipped to `F(t) ≤ 0`. `O(n)` predicates of degree ≤ 6.
+pub(crate) fn pieces<K: Kernel>(prep: &Prepared, frame: Frame) -> Vec<Piece> {
+    let pts = &prep.pts[..];
+    let n = pts.len();
+    if n < 2 {
+        return Vec::new();
+    }
+    // The real edges; an end may be a vertex hidden behind the nearest vertex of a run at its
+    // height (an edge perpendicular to the line).
+    let edges: Vec<Edge> = (0..n - 1)
+        .map(|k| {
+            let (a, b, _, _) = prep.edge(k);
+            Edge { a, b }
+        })
+        .collect();
+    // Upper spans per edge (ascending), from the top-to-bottom scan. For the edge below vertex i,
+    // the hull pairs popped at its bottom end are walked before vertex i pops: when that end is a
+    // hidden run vertex (deeper than `pts[i]` at the same height) they are a prefix of the pairs
+    // `pts[i]` pops (a pair pops for points on its line's side toward `l`), so the walk is amortized.
+    let mut upper: Vec<Vec<Span>> = vec![Vec::new(); n - 1];
+    let mut stack: Vec<usize> = Vec::with_capacity(n);
+    for i in (0..n).rev() {
+        if i + 1 < n {
+            let e = &edges[i];
+            let mut desc: Vec<Span> = Vec::new();
+            let mut top = Param::End;
+            let mut cur = stack.last().map(|&c| pts[c]);
+            for t in (1..stack.len()).rev() {
+                let (cm, cm1) = (pts[stack[t]], pts[stack[t - 1]]);
+                let sa = frame.orient::<K>(e.a, cm, cm1);
+                if sa == Sign::Negative {
+                    break; // the pair does not pop at the bottom end
+                }
+                let sb = frame.orient::<K>(e.b, cm, cm1);
+                if sb != Sign::Negative {
+                    cur = Some(cm1); // pops on all of the current range
+                    continue;
+                }
+                if sa == Sign::Zero {
+                    break; // pops at the bottom end only
+                }
+                let w = Param::Root(pair_form(cm, cm1));
+                desc.push(Span {
+                    bot: w,
+                    top,
+                    tangent: cur,
+                });
+                top = w;
+                cur = Some(cm1);
+            }
+            desc.push(Span {
+                bot: Param::Start,
+                top,
+                tangent: cur,
+            });
+            desc.reverse();
+            upper[i] = depth_rule::<K>(e, frame, desc);
+        }
+        let p = pts[i];
+        while let [.., c2, c1] = stack[..] {
+            if frame.orient::<K>(p, pts[c1], pts[c2]) == Sign::Negative {
+                break;
+            }
+            stack.pop();
+        }
+        stack.push(i);
+    }
+    // Lower spans per edge (ascending), from the bottom-to-top scan (the mirror image).
+    let mut lower: Vec<Vec<Span>> = vec![Vec::new(); n - 1];
+    stack.clear();
+    for i in 0..n {
+        if i >= 1 {
+            let e = &edges[i - 1];
+            let mut asc: Vec<Span> = Vec::new();
+            let mut bot = Param::Start;
+            let mut cur = stack.last().map(|&d| pts[d]);
+            for t in (1..stack.len()).rev() {
+                let (dm, dm1) = (pts[stack[t]], pts[stack[t - 1]]);
+                let sb = frame.orient::<K>(e.b, dm, dm1);
+                if sb == Sign::Positive {
+                    break;
+                }
+                let sa = frame.orient::<K>(e.a, dm, dm1);
+                if sa != Sign::Positive {
+                    cur = Some(dm1);
+                    continue;
+                }
+                if sb == Sign::Zero {
+                    break;
+                }
+                let w = Param::Root(pair_form(dm, dm1));
+                asc.push(Span {
+                    bot,
+                    top: w,
+                    tangent: cur,
+                });
+                bot = w;
+                cur = Some(dm1);
+            }
+            asc.push(Span {
+                bot,
+                top: Param::End,
+                tangent: cur,
+            });
+            lower[i - 1] = depth_rule::<K>(e, frame, asc);
+        }
+        let p = pts[i];
+        while let [.., d2, d1] = stack[..] {
+            if frame.orient::<K>(p, pts[d1], pts[d2]) == Sign::Positive {
+                break;
+            }
+            stack.pop();
+        }
+        stack.push(i);
+    }
+    // Merge and clip.
+    let mut out: Vec<Piece> = Vec::new();
+    for (k, e) in edges.iter().enumerate() {
+        let (us, ls) = (&upper[k], &lower[k]);
+        let (mut iu, mut il) = (0, 0);
+        let mut bot = Param::Start;
+        // Each step advances at least one list: at most |us| + |ls| steps.
+        while iu < us.len() && il < ls.len() {
+            let (tu, tl) = (us[iu].top, ls[il].top);
+            let o = e.cmp::<K>(&tu, &tl);
+            let top = if o == Ordering::Greater { tl } else { tu };
+            if e.cmp::<K>(&bot, &top) == Ordering::Less {
+                clip_and_push::<K>(&mut out, k, e, bot, top, us[iu].tangent, ls[il].tangent);
+                bot = top;
+            }
+            if o != Ordering::Greater {
+                iu += 1;
+            }
+            if o != Ordering::Less {
+                il += 1;
+            }
+        }
+    }
+    out
+}
+
+/// Clips the piece `[bot, top]` of edge `k` to the arc `F ≤ 0` and pushes what is left.
+fn clip_and_push<K: Kernel>(
+    out: &mut Vec<Piece>,
+    k: usize,
+    e: &Edge,
+    bot: Param,
+    top: Param,
+    hi: Option<DVec2>,
+    lo: Option<DVec2>,
+) {
+    let piece = out.len();
+    let (Some(h), Some(l)) = (hi, lo) else {
+        out.push(Piece {
+            edge: k,
+            bot,
+            top,
+            hi,
+            lo,
+        });
+        return;
+    };
+    if e.disc::<K>(h, l) == Sign::Negative {
+        return; // α < 90° on the whole line of the edge
+    }
+    let arc = |t: &Param| {
+        let r1 = Param::Clip {
+            h,
+            l,
+            hi: false,
+            piece,
+        };
+        let r2 = Param::Clip {
+            h,
+            l,
+            hi: true,
+            piece,
+        };
+        (e.cmp::<K>(t, &r1), e.cmp::<K>(t, &r2))
+    };
+    let (b1, b2) = arc(&bot);
+    let (t1, t2) = arc(&top);
+    if b2 == Ordering::Greater || t1 == Ordering::Less {
+        return; // the piece misses the arc
+    }
+    let new_bot = if b1 == Ordering::Less {
+        if t1 == Ordering::Equal {
+            top
+        } else {
+            Param::Clip {
+                h,
+                l,
+                hi: false,
+                piece,
+            }
+        }
+    } else {
+        bot
+    };
+    let new_top = if t2 == Ordering::Greater {
+        if b2 == Ordering::Equal {
+            bot
+        } else {
+            Param::Clip {
+                h,
+                l,
+                hi: true,
+                piece,
+            }
+        }
+    } else {
+        top
+    };
+    // A piece clipped down to one end of its edge is that vertex alone (typically `F` vanishing at
+    // the edge's top because the top is its own tangent point `h`). The vertex is a CVV candidate, and
+    // the piece's wedge (built from the tangents of the edge's interior) is not the vertex's own: as a
+    // row it would reject admissible `u` and, through the cap of the `R()` scan, starve the rows
+    // below (found by the soak test, see docs). Dropped.
+    if e.cmp::<K>(&new_bot, &new_top) == Ordering::Equal
+        && (e.is_end::<K>(&new_bot, false) || e.is_end::<K>(&new_top, true))
+    {
+        return;
+    }
+    out.push(Piece {
+        edge: k,
+        bot: new_bot,
+        top: new_top,
+        hi,
+        lo,
+    });
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use polydist_oracle::SplitMix64;
+    use polydist_predicates::Exact;
+
+    const P: Frame = Frame {
+        l0: DVec2::ZERO,
+        l1: DVec2::new(0.0, 1.0),
+        mirror: false,
+    };
+
+    fn chain(rng: &mut SplitMix64, n: usize) -> Vec<DVec2> {
+        let mut ys: Vec<i64> = (0..n).map(|_| rng.range_i64(0, 3 * n as i64)).collect();
+        ys.sort_unstable();
+        ys.dedup();
+        ys.into_iter()
+            .map(|y| DVec2::new(rng.range_i64(0, 9) as f64, y as f64))
+            .collect()
+    }
+
+    /// An `f64` approximation of a parameter, for sampling only.
+    fn approx(e: &Edge, t: &Param) -> f64 {
+        let val = |g: &Affine, x: DVec2| {
+            let (d, w) = (x - g.c, g.v1 - g.v0);
+            if g.cross { d.perp_dot(w) } else { d.dot(w) }
+        };
+        match t {
+            Param::Start => 0.0,
+            Param::End => 1.0,
+            Param::Root(f) => {
+                let (fa, fb) = (val(f, e.a), val(f, e.b));
+                fa / (fa - fb)
+            }
+            Param::Clip { h, l, hi, .. } => {
+                let d = e.b - e.a;
+                let a = d.dot(d);
+                let b = (2.0 * e.a - *h - *l).dot(d);
+                let c = (e.a - *h).dot(e.a - *l);
+                let s = (b * b - 4.0 * a * c).max(0.0).sqrt();
+                if *hi {
+                    (-b + s) / (2.0 * a)
+                } else {
+                    (-b - s) / (2.0 * a)
+                }
+            }
+        }
+    }
+
+    /// Brute-force tangents from a point `x` of edge `k`: the extreme point above (below) by polar
+    /// angle, farthest on ties, when strictly nearer to the line.
+    fn brute(pts: &[DVec2], k: usize, x: DVec2, up: bool) -> Option<DVec2> {
+        let cands: Vec<DVec2> = if up {
+            pts[k + 1..].to_vec()
+        } else {
+            pts[..=k].to_vec()
+        };
+        let want = if up { Sign::Positive } else { Sign::Negative };
+        let mut best = cands[0];
+        for &c in &cands[1..] {
+            let s = Exact::orient(x, best, c).sign();
+            if s == want || (s == Sign::Zero && (c - x).length() > (best - x).length()) {
+                best = c;
+            }
+        }
+        (best.x < x.x).then_some(best)
+    }
+
+    #[test]
+    fn pieces_have_constant_tangents_and_cover_the_arc() {
+        let mut rng = SplitMix64::new(31);
+        let mut checked = 0;
+        for n in [2usize, 3, 5, 9, 16, 30] {
+            for _ in 0..200 {
+                let pts = chain(&mut rng, n);
+                let prep = Prepared {
+                    idx: (0..pts.len()).collect(),
+                    pts: pts.clone(),
+                    rising: true,
+                    first_run: None,
+                    first: pts.iter().enumerate().map(|(i, &v)| (v, i)).collect(),
+                    last: pts.iter().enumerate().map(|(i, &v)| (v, i)).collect(),
+                };
+                let ps = pieces::<Exact>(&prep, P);
+                // Pieces are in order along the chain and well formed.
+                for w in ps.windows(2) {
+                    assert!(w[0].edge <= w[1].edge);
+                }
+                for pc in &ps {
+                    let e = Edge {
+                        a: pts[pc.edge],
+                        b: pts[pc.edge + 1],
+                    };
+                    assert_ne!(e.cmp::<Exact>(&pc.bot, &pc.top), Ordering::Greater);
+                    let (t0, t1) = (approx(&e, &pc.bot), approx(&e, &pc.top));
+                    if t1 - t0 < 1e-6 {
+                        continue;
+                    }
+                    for f in [0.25, 0.5, 0.75] {
+                        // A dyadic parameter keeps the sample exactly on the edge (integer ends).
+                        let t = ((t0 + f * (t1 - t0)) * 1024.0).round() / 1024.0;
+                        if t <= t0 + 1e-9 || t >= t1 - 1e-9 {
+                            continue;
+                        }
+                        let x = e.a + (e.b - e.a) * t;
+                        assert_eq!(
+                            pc.hi,
+                            brute(&pts, pc.edge, x, true),
+                            "h at t={t} of {pc:?} in {pts:?}"
+                        );
+                        assert_eq!(
+                            pc.lo,
+                            brute(&pts, pc.edge, x, false),
+                            "l at t={t} of {pc:?} in {pts:?}"
+                        );
+                        if let (Some(h), Some(l)) = (pc.hi, pc.lo) {
+                            assert!((h - x).dot(l - x) <= 1e-9, "α < 90° inside {pc:?}");
+                        }
+                        checked += 1;
+                    }
+                }
+                // Every sampled edge point with α clearly ≥ 90° lies in some piece.
+                for k in 0..pts.len().saturating_sub(1) {
+                    let e = Edge {
+                        a: pts[k],
+                        b: pts[k + 1],
+                    };
+                    for s in 1..32 {
+                        let t = s as f64 / 32.0;
+                        let x = e.a + (e.b - e.a) * t;
+                        let (h, l) = (brute(&pts, k, x, true), brute(&pts, k, x, false));
+                        let keep = match (h, l) {
+                            (Some(h), Some(l)) => (h - x).dot(l - x) < -1e-9,
+                            _ => true,
+                        };
+                        if keep {
+                            assert!(
+                                ps.iter().any(|pc| pc.edge == k
+                                    && approx(&e, &pc.bot) <= t + 1e-9
+                                    && t <= approx(&e, &pc.top) + 1e-9),
+                                "t={t} on edge {k} of {pts:?} is in no piece: {ps:?}"
+                            );
+                        }
+                    }
+                }
+            }
+        }
+        assert!(checked > 2000, "{checked}");
+    }
+}

@@ -1,0 +1,70 @@
+//! Result types.
+
+use glam::DVec2;
+use polydist_polygon::Feature;
+
+/// A closest pair between the chains `P` and `Q`, in the caller's indices: `Feature::Vertex(i)` is
+/// the caller's vertex `i` of that chain, `Feature::Edge(i)` the segment from vertex `i` to vertex
+/// `i + 1` (chains are open: there is no closing edge).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ClosestPair {
+    /// The distance, rounded from the exact value (see `construct` error bounds in the crate docs).
+    pub distance: f64,
+    /// The squared distance, the exact value rounded once for vertex pairs.
+    pub squared_distance: f64,
+    /// The realizing point on `P`.
+    pub point_p: DVec2,
+    /// The realizing point on `Q`.
+    pub point_q: DVec2,
+    /// The feature of `P` realizing the distance (exact).
+    pub feature_p: Feature,
+    /// The feature of `Q` realizing the distance (exact).
+    pub feature_q: Feature,
+}
+
+/// Operation counts of one run of [`closest_visible_vertices`](crate::closest_visible_vertices),
+/// for complexity tests (predicate counts come from `polydist_predicates::Counted`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct CvvStats {
+    /// Vertices of `P` left after Lemma 2 (perpendicular visibility).
+    pub p_after_lemma2: usize,
+    /// Vertices of `Q` left after Lemma 2.
+    pub q_after_lemma2: usize,
+    /// Vertices of `P` left after Lemma 3 (`α ≥ 90°`): the rows of `M`.
+    pub p_after_lemma3: usize,
+    /// Vertices of `Q` left after Lemma 3: the columns of `M`.
+    pub q_after_lemma3: usize,
+    /// Entries of `M` evaluated by SMAWK.
+    pub entries_evaluated: usize,
+}
+
+/// The closest visible vertex pair and the work done to find it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Cvv {
+    /// The pair, both features `Feature::Vertex`.
+    pub pair: ClosestPair,
+    /// Operation counts.
+    pub stats: CvvStats,
+}
+
+/// Operation counts of one run of [`separation_of_chains`](crate::separation_of_chains).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct SeparationStats {
+    /// The CVV step.
+    pub cvv: CvvStats,
+    /// Edge pieces of `P` (rows of the first CVE matrix).
+    pub pieces_p: usize,
+    /// Edge pieces of `Q` (rows of the second CVE matrix).
+    pub pieces_q: usize,
+    /// Entries of the two CVE matrices evaluated by SMAWK.
+    pub cve_entries_evaluated: usize,
+}
+
+/// The separation of two chains, a realizing pair, and the work done.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ChainSeparation {
+    /// The pair; `feature_p`/`feature_q` are the caller's vertices or edges.
+    pub pair: ClosestPair,
+    /// Operation counts.
+    pub stats: SeparationStats,
+}

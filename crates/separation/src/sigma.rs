@@ -1,0 +1,212 @@
+//! σ of two chains separated by a line (Amato 1992, section 3, Theorem 2):
+//! `σ = min{σ(P_v, Q_v), σ(P_e, Q_v), σ(P_v, Q_e)}` from one CVV and two CVE searches.
+
+use core::cmp::Ordering;
+
+use glam::DVec2;
+use monotone_minima::row_minima_by;
+use polydist_polygon::Feature;
+use polydist_predicates::{Dist2, Kernel, Sign};
+
+use crate::chain::{Prepared, prepare_monotone, validate};
+use crate::construct::{vertex_edge, vertex_vertex};
+use crate::cve::{CveMatrix, EdgeEntry, compare_edge_entries};
+use crate::cvv::CvvMatrix;
+use crate::error::{Chain, SeparationError};
+use crate::pieces::pieces;
+use crate::result::{ChainSeparation, ClosestPair, SeparationStats};
+use crate::wedge::apexes;
+
+/// A candidate pair in caller features, before construction.
+#[derive(Clone, Copy, Debug)]
+enum Cand {
+    /// Vertex `p` (caller `i`) and vertex `q` (caller `j`).
+    Vv(DVec2, usize, DVec2, usize),
+    /// A vertex `v` (caller `j`) of one chain and the edge `(a, b)` of the other, with the caller
+    /// indices of `a` and `b` and of the edge; `p_side` says the edge is `P`'s.
+    Ve {
+        v: DVec2,
+        j: usize,
+        a: DVec2,
+        ia: usize,
+        b: DVec2,
+        ib: usize,
+        edge: usize,
+        p_side: bool,
+    },
+}
+
+impl Cand {
+    fn dist(&self) -> Dist2 {
+        match *self {
+            Cand::Vv(p, _, q, _) => Dist2::PointPoint(p, q),
+            Cand::Ve { v, a, b, .. } => Dist2::PointSegment(v, a, b),
+        }
+    }
+}
+
+/// The best candidate of the CVE search for the edges of `edges` against the vertices of `verts`.
+fn cve<K: Kernel>(m: &CveMatrix<K>, edges: &Prepared, p_side: bool) -> Option<Cand> {
+    let minima = row_minima_by(m, compare_edge_entries::<K>);
+    let mut best: Option<(usize, usize, EdgeEntry)> = None;
+    for (i, &j) in minima.iter().enumerate() {
+        let e = monotone_minima::Matrix::entry(m, i, j);
+        if !matches!(e, EdgeEntry::Dist { .. }) {
+            continue;
+        }
+        if best
+            .as_ref()
+            .is_none_or(|(_, _, b)| compare_edge_entries::<K>(&e, b) == Ordering::Less)
+        {
+            best = Some((i, j, e));
+        }
+    }
+    let (i, j, _) = best?;
+    let k = m.row_edge(i);
+    let col = m.column(j);
+    let (a, b, ia, ib) = edges.edge(k);
+    Some(Cand::Ve {
+        v: col.pt,
+        j: col.idx,
+        a,
+        ia,
+        b,
+        ib,
+        edge: edges.caller_edge(k),
+        p_side,
+    })
+}
+
+/// The separation `σ(P, Q)` of two polygonal chains `p` and `q` separated by the line through `a`
+/// and `b` and monotone along it, with a realizing pair of points and their features in
+/// the caller's indices (Amato 1992, section 3, Theorem 2; SMAWK: Aggarwal, Klawe, Moran, Shor,
+/// Wilber 1987).
+///
+/// `σ = min{CVV(P, Q), CVE(P_e, Q_v), CVE(Q_e, P_v)}`: the closest visible vertices (see
+/// [`closest_visible_vertices`](crate::closest_visible_vertices)), and twice the vertex–edge search:
+/// the edges of one chain are cut into pieces on which the tangent points `h()`, `l()` are constant
+/// (breakpoints found by the hull scans) and clipped to the arc `α ≥ 90°`, their regions `R()` and
+/// those of the other chain's vertices are found by pointer scans, and the tagged matrix `M` is
+/// searched with SMAWK. Constructed points (breakpoints, arc ends, the points `u^±` on edges) stay
+/// symbolic; every decision is the sign of a polynomial of degree ≤ 6 in the input coordinates.
+///
+/// # Complexity
+/// `O(n_p + n_q)` time and predicate calls.
+///
+/// # Errors
+/// Those of [`closest_visible_vertices`](crate::closest_visible_vertices). Edges perpendicular to the
+/// line are accepted: their points other than the nearest vertex are not perpendicularly visible, and
+/// the adjacent edges end at the hidden vertices of the run.
+///
+/// # Examples
+/// ```
+/// use glam::DVec2;
+/// use polydist_polygon::Feature;
+/// use polydist_predicates::Robust;
+/// use polydist_separation::separation_of_chains;
+///
+/// // Two zig-zags facing each other across the y-axis.
+/// let p = [DVec2::new(1.0, 0.0), DVec2::new(3.0, 1.0), DVec2::new(0.5, 3.0)];
+/// let q = [DVec2::new(-2.0, 0.5), DVec2::new(-0.5, 1.5), DVec2::new(-3.0, 3.0)];
+/// let s = separation_of_chains::<Robust>(&p, &q, DVec2::ZERO, DVec2::Y)?;
+/// // The vertex (-0.5, 1.5) of Q is nearest to the interior of P's edge from (3, 1) to (0.5, 3).
+/// assert_eq!((s.pair.feature_p, s.pair.feature_q), (Feature::Edge(1), Feature::Vertex(1)));
+/// assert_eq!(s.pair.point_q, DVec2::new(-0.5, 1.5));
+/// # Ok::<(), polydist_separation::SeparationError>(())
+/// ```
+pub fn separation_of_chains<K: Kernel>(
+    p: &[DVec2],
+    q: &[DVec2],
+    a: DVec2,
+    b: DVec2,
+) -> Result<ChainSeparation, SeparationError> {
+    let frames = validate::<K>(p, q, a, b)?;
+    let pp = prepare_monotone::<K>(p, frames.p, Chain::P)?;
+    let qq = prepare_monotone::<K>(q, frames.q, Chain::Q)?;
+    let pa = apexes::<K>(&pp, frames.p);
+    let qa = apexes::<K>(&qq, frames.q);
+    let cvv = CvvMatrix::<K>::from_parts(frames, &pp, &qq, pa.clone(), qa.clone());
+    let vv = cvv.best().map(|(i, j)| {
+        let (r, c) = cvv.apexes_at(i, j);
+        Cand::Vv(r.pt, r.idx, c.pt, c.idx)
+    });
+    let p_pieces = pieces::<K>(&pp, frames.p);
+    let q_pieces = pieces::<K>(&qq, frames.q);
+    let stats_pieces = (p_pieces.len(), q_pieces.len());
+    let m_pq = CveMatrix::<K>::build(frames.p, frames.q, real_edges(&pp), p_pieces, qa);
+    let pe_qv = cve(&m_pq, &pp, true);
+    let m_qp = CveMatrix::<K>::build(frames.q, frames.p, real_edges(&qq), q_pieces, pa);
+    let qe_pv = cve(&m_qp, &qq, false);
+    let mut best: Option<Cand> = None;
+    for c in [vv, pe_qv, qe_pv].into_iter().flatten() {
+        if best.is_none_or(|b| K::cmp_dist2(c.dist(), b.dist()) == Ordering::Less) {
+            best = Some(c);
+        }
+    }
+    let pair = build::<K>(best.ok_or(SeparationError::Inconsistent)?);
+    Ok(ChainSeparation {
+        pair,
+        stats: SeparationStats {
+            cvv: cvv.stats(),
+            pieces_p: stats_pieces.0,
+            pieces_q: stats_pieces.1,
+            cve_entries_evaluated: m_pq.lookups() + m_qp.lookups(),
+        },
+    })
+}
+
+/// The real edges of a prepared chain, between consecutive heights.
+pub(crate) fn real_edges(pp: &Prepared) -> Vec<(DVec2, DVec2)> {
+    (0..pp.pts.len().saturating_sub(1))
+        .map(|k| {
+            let (a, b, _, _) = pp.edge(k);
+            (a, b)
+        })
+        .collect()
+}
+
+/// The realizing points and caller features of a candidate.
+fn build<K: Kernel>(c: Cand) -> ClosestPair {
+    match c {
+        Cand::Vv(p, i, q, j) => vertex_vertex(p, q, Feature::Vertex(i), Feature::Vertex(j)),
+        Cand::Ve {
+            v,
+            j,
+            a,
+            ia,
+            b,
+            ib,
+            edge,
+            p_side,
+        } => {
+            let (near, fe) = if K::dot_sign(a, v, a, b) != Sign::Positive {
+                (Some(a), Feature::Vertex(ia))
+            } else if K::dot_sign(b, v, b, a) != Sign::Positive {
+                (Some(b), Feature::Vertex(ib))
+            } else {
+                (None, Feature::Edge(edge))
+            };
+            let (squared, distance, foot) = match near {
+                Some(x) => {
+                    let r = vertex_vertex(v, x, fe, fe);
+                    (r.squared_distance, r.distance, x)
+                }
+                None => vertex_edge(v, a, b),
+            };
+            let fv = Feature::Vertex(j);
+            let (point_p, point_q, feature_p, feature_q) = if p_side {
+                (foot, v, fe, fv)
+            } else {
+                (v, foot, fv, fe)
+            };
+            ClosestPair {
+                distance,
+                squared_distance: squared,
+                point_p,
+                point_q,
+                feature_p,
+                feature_q,
+            }
+        }
+    }
+}
