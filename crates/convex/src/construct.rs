@@ -88,7 +88,17 @@ pub(crate) struct Built {
 
 /// Distance between two vertices.
 pub(crate) fn vertex_vertex(p: DVec2, q: DVec2) -> Built {
-    let squared = round_value(&SqDist, &[p.x, p.y, q.x, q.y]);
+    // The exact differences, squared and summed in double-double; exact evaluation only where the
+    // bound cannot certify the rounding (the same value either way).
+    let (dx, dy) = (
+        DoubleDouble::difference(p.x, q.x),
+        DoubleDouble::difference(p.y, q.y),
+    );
+    let squared = dx
+        .square()
+        .add(&dy.square())
+        .certain_rounding()
+        .unwrap_or_else(|| round_value(&SqDist, &[p.x, p.y, q.x, q.y]));
     Built {
         distance: squared.sqrt(),
         squared,
