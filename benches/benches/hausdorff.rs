@@ -10,6 +10,8 @@
 //! - `cmmr_{fast,robust,exact}`: `cmmr_with::<K>` (two walks, every per-vertex term and record,
 //!   compensated sum); `cmmr_value_{fast,robust,exact}`: `cmmr_value_with::<K>` (the same value without
 //!   the per-vertex records); the Exact kernel up to `n = 4,096`;
+//! - `hausdorff_pieces_robust`, `cmmr_pieces_robust` (overlapping workload only): the same results by
+//!   ARL's piece decomposition (`hausdorff_pieces_with::<Robust>`, `cmmr_pieces_with::<Robust>`);
 //! - `brute_continuous`: `hausdorff_brute::<Robust>` (every vertex against every edge, `Θ(nm)`), up to
 //!   `n = 4,096`;
 //! - `geo_discrete`: geo 0.32's `HausdorffDistance::hausdorff_distance` (vertex to vertex, `O(nm)`), up to
@@ -30,7 +32,10 @@ use geo::{HausdorffDistance, LineString, Polygon};
 use glam::DVec2;
 use polydist_convex::polygon::ConvexPolygon;
 use polydist_convex::polygon::predicates::{Exact, Fast, Kernel, Robust};
-use polydist_convex::{cmmr_value_with, cmmr_with, hausdorff_brute, hausdorff_with};
+use polydist_convex::{
+    cmmr_pieces_with, cmmr_value_with, cmmr_with, hausdorff_brute, hausdorff_pieces_with,
+    hausdorff_with,
+};
 use polydist_oracle::{SplitMix64, random_convex};
 
 /// 64 … 1,048,576 vertices per polygon.
@@ -111,6 +116,18 @@ fn check(pair: &Pair, n: usize, w: Workload) {
         close(hausdorff_with::<Exact>(&pair.p, &pair.q).distance, "exact");
     }
     let c = cmmr_with::<Robust>(&pair.p, &pair.q).value;
+    if let Workload::Overlapping = w {
+        assert_eq!(
+            hausdorff_pieces_with::<Robust>(&pair.p, &pair.q),
+            h,
+            "n = {n}: pieces"
+        );
+        assert_eq!(
+            cmmr_pieces_with::<Robust>(&pair.p, &pair.q).value,
+            c,
+            "n = {n}: pieces"
+        );
+    }
     if n <= QUADRATIC_MAX {
         assert_eq!(
             hausdorff_brute::<Robust>(&pair.p, &pair.q),
@@ -159,6 +176,16 @@ fn workload(c: &mut Criterion, w: Workload) {
         series::<Robust>(&mut group, n, &pair);
         if n <= EXACT_MAX {
             series::<Exact>(&mut group, n, &pair);
+        }
+        if let Workload::Overlapping = w {
+            group.bench_with_input(
+                BenchmarkId::new("hausdorff_pieces_robust", n),
+                &pair,
+                |b, s| b.iter(|| hausdorff_pieces_with::<Robust>(black_box(&s.p), black_box(&s.q))),
+            );
+            group.bench_with_input(BenchmarkId::new("cmmr_pieces_robust", n), &pair, |b, s| {
+                b.iter(|| cmmr_pieces_with::<Robust>(black_box(&s.p), black_box(&s.q)))
+            });
         }
         if n <= QUADRATIC_MAX {
             group.bench_with_input(BenchmarkId::new("brute_continuous", n), &pair, |b, s| {

@@ -82,6 +82,10 @@ pub use hausdorff::{
     per_vertex_distances, per_vertex_distances_brute, per_vertex_distances_with,
     reset_walk_fallbacks, walk_fallbacks,
 };
+pub use hausdorff::{
+    PiecesStats, cmmr_pieces_with, hausdorff_pieces_with, per_vertex_distances_pieces_with,
+    pieces_stats, reset_pieces_stats,
+};
 pub use hint::{Hint, distance_with_hint};
 pub use meet::Contact;
 pub use pose::{Pose, distance_posed};
