@@ -4,6 +4,10 @@
 //! collinear input, near-degenerate, co-circular lattice sets), points and segments; exact argmax and
 //! ulp bounds under Robust and Exact; the Fast kernel measured; linear growth by counting predicates.
 
+mod common;
+
+use common::Chaos;
+
 use core::cmp::Ordering;
 
 use glam::DVec2;
@@ -598,38 +602,6 @@ fn brute_force_is_quadratic_by_count() {
     assert!(brute > 400 * 400, "{brute}");
     assert!(walk < 20 * 800, "{walk}");
     assert_eq!(walk.cmp(&brute), Ordering::Less);
-}
-
-std::thread_local! {
-    static CHAOS: core::cell::Cell<u64> = const { core::cell::Cell::new(0x9e37_79b9_7f4a_7c15) };
-}
-
-/// A kernel whose every sign is pseudo-random: the walk must still terminate (its step budget) and
-/// never panic, whatever the predicates say.
-#[derive(Clone, Copy, Debug, Default)]
-struct Chaos;
-
-impl Kernel for Chaos {
-    const NAME: &'static str = "chaos";
-    const EXACT_DECISIONS: bool = false;
-    type Guide = Chaos;
-    fn sign<const N: usize, P: polydist_convex::polygon::predicates::Polynomial<N> + ?Sized>(
-        _: &P,
-        _: &[f64; N],
-    ) -> polydist_convex::polygon::predicates::Sign {
-        use polydist_convex::polygon::predicates::Sign;
-        CHAOS.with(|c| {
-            let mut z = c.get().wrapping_add(0x9e37_79b9_7f4a_7c15);
-            c.set(z);
-            z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-            z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-            match (z ^ (z >> 31)) % 3 {
-                0 => Sign::Negative,
-                1 => Sign::Zero,
-                _ => Sign::Positive,
-            }
-        })
-    }
 }
 
 #[test]

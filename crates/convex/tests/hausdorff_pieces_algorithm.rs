@@ -4,10 +4,13 @@
 //! rotated half a step, lattice pairs with shared edges and vertex touches, identical and nested
 //! pairs); linear by counting predicate calls; Fast and a random-sign kernel terminate.
 
+mod common;
+
+use common::Chaos;
+
 use glam::DVec2;
 use polydist_convex::polygon::predicates::{
-    BigRational, Counted, Exact, Fast, Kernel, Polynomial, Robust, Sign, predicate_counts,
-    reset_predicate_counts,
+    BigRational, Counted, Exact, Fast, Kernel, Robust, predicate_counts, reset_predicate_counts,
 };
 use polydist_convex::polygon::{ConvexPolygon, Location};
 use polydist_convex::{
@@ -372,33 +375,6 @@ fn linear_growth_by_counting_predicates() {
             assert!(c <= 80.0, "n = {n}: {c} calls per vertex");
             assert!(c <= 1.5 * first + 10.0, "n = {n}: {c} against {first}");
         }
-    }
-}
-
-thread_local! {
-    static CHAOS: core::cell::Cell<u64> = const { core::cell::Cell::new(1) };
-}
-
-/// Pseudo-random signs: the piece algorithm must terminate and never panic.
-#[derive(Clone, Copy, Debug, Default)]
-struct Chaos;
-
-impl Kernel for Chaos {
-    const NAME: &'static str = "chaos";
-    const EXACT_DECISIONS: bool = false;
-    type Guide = Chaos;
-    fn sign<const N: usize, P: Polynomial<N> + ?Sized>(_: &P, _: &[f64; N]) -> Sign {
-        CHAOS.with(|c| {
-            let mut z = c.get().wrapping_add(0x9e37_79b9_7f4a_7c15);
-            c.set(z);
-            z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-            z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-            match (z ^ (z >> 31)) % 3 {
-                0 => Sign::Negative,
-                1 => Sign::Zero,
-                _ => Sign::Positive,
-            }
-        })
     }
 }
 
