@@ -3,19 +3,23 @@
 //! ```text
 //! polydist                      # runs the embedded default scene (same as `polydist run`)
 //! polydist run [SCENE] [--json] [--kernel fast|robust|exact] [--no-coherence] [--no-count]
+//!               [--no-broad-phase] [--threads N]
 //! polydist check SCENE          # validates and explains every problem, without running
 //! ```
 //!
 //! Exit status: 0 when everything was computed, 1 when some pair failed (all pairs are still
 //! reported), 2 when the scene is invalid or cannot be read.
 
-use std::io::Write as _;
+use std::io::{IsTerminal as _, Write as _};
 use std::path::PathBuf;
 use std::process::ExitCode;
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::time::{Duration, Instant};
 
 use clap::{Parser, Subcommand, ValueEnum};
 use polydist_scene::{
     KernelChoice, Origin, RunOptions, Scene, SceneErrors, Shape, load_file, load_str, plan, run,
+    run_with_progress,
 };
 
 /// The default scene, shown by `polydist run` without a file.
@@ -54,6 +58,13 @@ enum Command {
         /// Do not count predicates (the `predicates` costs become null).
         #[arg(long)]
         no_count: bool,
+        /// Turn the broad phase off for queries with `within` (the results are identical; only the
+        /// cost changes).
+        #[arg(long)]
+        no_broad_phase: bool,
+        /// The number of threads (default: all cores, or RAYON_NUM_THREADS).
+        #[arg(long)]
+        threads: Option<usize>,
     },
     /// Validate a scene and explain every problem, without running it.
     Check {
@@ -110,6 +121,8 @@ fn main() -> ExitCode {
             kernel,
             no_coherence,
             no_count,
+            no_broad_phase,
+            threads,
         }) => run_command(
             scene.as_ref(),
             json,
@@ -117,9 +130,61 @@ fn main() -> ExitCode {
                 kernel: kernel.map(KernelChoice::from),
                 coherence: no_coherence.then_some(false),
                 count_predicates: !no_count,
+                broad_phase: !no_broad_phase,
+                threads,
             },
         ),
         Some(Command::Check { scene }) => check_command(&scene),
+    }
+}
+
+/// A progress bar on stderr (drawn only when stderr is a terminal, and only once a run has taken
+/// half a second: short runs stay silent).
+struct ProgressBar {
+    start: Instant,
+    /// The last drawn permille plus one (0: nothing drawn yet).
+    drawn: AtomicU64,
+}
+
+impl ProgressBar {
+    const WIDTH: u64 = 40;
+
+    fn new() -> ProgressBar {
+        ProgressBar {
+            start: Instant::now(),
+            drawn: AtomicU64::new(0),
+        }
+    }
+
+    fn update(&self, done: u64, total: u64) {
+        if total == 0 || self.start.elapsed() < Duration::from_millis(500) {
+            return;
+        }
+        let permille = done.min(total) * 1000 / total;
+        let previous = self.drawn.swap(permille + 1, Ordering::Relaxed);
+        if previous == permille + 1 {
+            return;
+        }
+        let filled = permille * Self::WIDTH / 1000;
+        let bar: String = (0..Self::WIDTH)
+            .map(|i| if i < filled { '#' } else { '-' })
+            .collect();
+        let mut err = std::io::stderr().lock();
+        let _ = write!(
+            err,
+            "\r[{bar}] {:>5.1}% ({done}/{total}) {:.1}s",
+            permille as f64 / 10.0,
+            self.start.elapsed().as_secs_f64()
+        );
+        let _ = err.flush();
+    }
+
+    fn finish(&self) {
+        if self.drawn.load(Ordering::Relaxed) != 0 {
+            let mut err = std::io::stderr().lock();
+            let _ = write!(err, "\r{:width$}\r", "", width = Self::WIDTH as usize + 40);
+            let _ = err.flush();
+        }
     }
 }
 
@@ -131,7 +196,14 @@ fn run_command(path: Option<&PathBuf>, json: bool, options: RunOptions) -> ExitC
             return ExitCode::from(2);
         }
     };
-    let report = run(&scene, &options);
+    let report = if std::io::stderr().is_terminal() {
+        let bar = ProgressBar::new();
+        let report = run_with_progress(&scene, &options, &|done, total| bar.update(done, total));
+        bar.finish();
+        report
+    } else {
+        run(&scene, &options)
+    };
     let text = if json {
         match serde_json::to_string_pretty(&report) {
             Ok(mut s) => {

@@ -48,6 +48,7 @@
 //! # Ok::<(), polydist_scene::SceneErrors>(())
 //! ```
 
+mod broad;
 mod error;
 mod generate;
 mod load;
@@ -56,6 +57,7 @@ mod report;
 mod run;
 mod spec;
 
+pub use broad::{Aabb, SweepStats, all_pairs_not_farther, sweep_and_prune};
 pub use error::{SceneError, SceneErrors};
 pub use generate::MAX_VERTICES;
 pub use load::{
@@ -68,7 +70,7 @@ pub use report::{
     ClosestPoints, ContactOutcome, ContactResult, Cost, Costs, FeatureRef, FrameResult, PairReport,
     REPORT_VERSION, Report, Status, TimeReport, VertexDistanceResult,
 };
-pub use run::{PairJob, Plan, RunOptions, plan, run};
+pub use run::{PairJob, Plan, RunOptions, plan, run, run_with_progress};
 pub use spec::{
     BodySpec, Effect, EffectSet, GeneratorSpec, KernelChoice, KeyframeSpec, KindSpec, MotionSpec,
     PairsSpec, PoseSpec, QuerySpec, SceneSpec, TimeSpec,
