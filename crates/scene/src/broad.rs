@@ -103,6 +103,16 @@ pub struct SweepStats {
 /// counted in [`SweepStats::examined`]).
 #[must_use]
 pub fn sweep_and_prune(boxes: &[Option<Aabb>], r: f64) -> (Vec<(usize, usize)>, SweepStats) {
+    sweep_pairs(boxes, r, |_, _| true)
+}
+
+/// [`sweep_and_prune`] restricted to the pairs `accept` takes (the two layers of a batch): the
+/// others are passed over by the sweep without the box test.
+pub(crate) fn sweep_pairs(
+    boxes: &[Option<Aabb>],
+    r: f64,
+    accept: impl Fn(usize, usize) -> bool,
+) -> (Vec<(usize, usize)>, SweepStats) {
     let mut order: Vec<usize> = (0..boxes.len()).filter(|&i| boxes[i].is_some()).collect();
     let lo = |i: usize| boxes[i].map_or(0.0, |b| b.min.x);
     order.sort_by(|&i, &j| lo(i).total_cmp(&lo(j)).then(i.cmp(&j)));
@@ -115,6 +125,9 @@ pub fn sweep_and_prune(boxes: &[Option<Aabb>], r: f64) -> (Vec<(usize, usize)>, 
             let Some(bj) = boxes[j] else { continue };
             if finite && gap_down(bj.min.x, bi.max.x) > r {
                 break;
+            }
+            if !accept(i, j) {
+                continue;
             }
             stats.examined += 1;
             if !bi.certainly_farther(&bj, r) {

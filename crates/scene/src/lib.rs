@@ -48,6 +48,7 @@
 //! # Ok::<(), polydist_scene::SceneErrors>(())
 //! ```
 
+mod batch;
 mod broad;
 mod error;
 mod generate;
@@ -57,6 +58,10 @@ mod report;
 mod run;
 mod spec;
 
+pub use batch::{
+    BatchOptions, BatchSummary, LayerPolygon, MAX_LAYER_POLYGONS, MAX_LINE_BYTES, batch_pairs,
+    batch_within, read_layer,
+};
 pub use broad::{Aabb, SweepStats, all_pairs_not_farther, sweep_and_prune};
 pub use error::{SceneError, SceneErrors};
 pub use generate::MAX_VERTICES;

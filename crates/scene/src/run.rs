@@ -263,14 +263,14 @@ pub fn run_with_progress(
 
 /// A body placed at a time: the re-validated polygon (its caller index `k` is the body's internal
 /// vertex `k`) and the pose.
-struct Posed {
-    poly: ConvexPolygon,
-    pose: Pose,
+pub(crate) struct Posed {
+    pub(crate) poly: ConvexPolygon,
+    pub(crate) pose: Pose,
 }
 
 /// Measures the calls, predicates and time of a stage.
-struct Meter {
-    count: bool,
+pub(crate) struct Meter {
+    pub(crate) count: bool,
 }
 
 impl Meter {
@@ -498,7 +498,7 @@ fn run_with<K: Kernel>(
 /// The body at time `t`: its internal (strictly convex, counter-clockwise) vertices moved by the
 /// pose and validated again, so that the posed polygon's caller index `k` is the body's internal
 /// vertex `k`. An error names the body, the time and the body's own (caller) vertex.
-fn pose_body(body: &Body, t: f64) -> Result<Posed, String> {
+pub(crate) fn pose_body(body: &Body, t: f64) -> Result<Posed, String> {
     let Shape::Convex(poly) = &body.shape else {
         // The loader refuses every effect on simple bodies in this version (NeedsConvex).
         return Err(format!(
@@ -573,7 +573,7 @@ fn caller_feature<K: Kernel>(poly: &ConvexPolygon, pose: Pose, f: Feature, x: DV
 }
 
 /// The per-frame effects of one job at one frame.
-fn eval_frame<K: Kernel>(
+pub(crate) fn eval_frame<K: Kernel>(
     job: &PairJob,
     t: f64,
     (ba, pa): (&Body, &Posed),
