@@ -3,7 +3,7 @@
 //! ```text
 //! polydist                      # runs the embedded default scene (same as `polydist run`)
 //! polydist run [SCENE] [--json] [--kernel fast|robust|exact] [--no-coherence] [--no-count]
-//!               [--no-broad-phase] [--threads N]
+//!               [--no-broad-phase] [--threads N] [--svg FILE]
 //! polydist check SCENE          # validates and explains every problem, without running
 //! polydist batch [PAIRS.jsonl] [--effects distance,...] [--threads N]   # docs/batch.md
 //! polydist batch --within R A.jsonl B.jsonl
@@ -22,7 +22,8 @@ use std::time::{Duration, Instant};
 use clap::{Parser, Subcommand, ValueEnum};
 use polydist_scene::{
     BatchOptions, Effect, EffectSet, KernelChoice, Origin, RunOptions, Scene, SceneErrors, Shape,
-    batch_pairs, batch_within, load_file, load_str, plan, read_layer, run, run_with_progress,
+    batch_pairs, batch_within, load_file, load_str, plan, read_layer, render_svg, run,
+    run_with_progress,
 };
 
 /// The default scene, shown by `polydist run` without a file.
@@ -68,6 +69,11 @@ enum Command {
         /// The number of threads (default: all cores, or RAYON_NUM_THREADS).
         #[arg(long)]
         threads: Option<usize>,
+        /// Also draw the scene as SVG into FILE: bodies at the frame of the smallest distance,
+        /// closest-point segments, Hausdorff witnesses; trajectories and distance over time for
+        /// moving scenes.
+        #[arg(long, value_name = "FILE")]
+        svg: Option<PathBuf>,
     },
     /// Answer pairs of polygons given as JSON lines, streaming, in parallel (docs/batch.md); with
     /// `--within R A B`, every pair of layers A and B at distance at most R.
@@ -139,7 +145,7 @@ fn print(text: &str) -> ExitCode {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.command {
-        None => run_command(None, false, RunOptions::default()),
+        None => run_command(None, false, None, RunOptions::default()),
         Some(Command::Run {
             scene,
             json,
@@ -148,9 +154,11 @@ fn main() -> ExitCode {
             no_count,
             no_broad_phase,
             threads,
+            svg,
         }) => run_command(
             scene.as_ref(),
             json,
+            svg.as_ref(),
             RunOptions {
                 kernel: kernel.map(KernelChoice::from),
                 coherence: no_coherence.then_some(false),
@@ -336,7 +344,12 @@ impl ProgressBar {
     }
 }
 
-fn run_command(path: Option<&PathBuf>, json: bool, options: RunOptions) -> ExitCode {
+fn run_command(
+    path: Option<&PathBuf>,
+    json: bool,
+    svg: Option<&PathBuf>,
+    options: RunOptions,
+) -> ExitCode {
     let scene = match load(path) {
         Ok(s) => s,
         Err(e) => {
@@ -352,6 +365,12 @@ fn run_command(path: Option<&PathBuf>, json: bool, options: RunOptions) -> ExitC
     } else {
         run(&scene, &options)
     };
+    if let Some(file) = svg {
+        if let Err(e) = std::fs::write(file, render_svg(&scene, &report)) {
+            eprintln!("polydist: cannot write {}: {e}", file.display());
+            return ExitCode::from(2);
+        }
+    }
     let text = if json {
         match serde_json::to_string_pretty(&report) {
             Ok(mut s) => {

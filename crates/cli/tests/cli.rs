@@ -785,3 +785,34 @@ fn batch_within_two_layers() {
     assert_eq!(got, want);
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// `run --svg FILE` writes an SVG document with the bodies, next to the usual table.
+#[test]
+fn run_writes_svg() {
+    let file = std::env::temp_dir().join(format!("polydist-cli-{}.svg", std::process::id()));
+    let scene = fixtures().join("scenes/corridor.toml");
+    let (code, out, err) = run(&[
+        "run",
+        scene.to_str().unwrap(),
+        "--svg",
+        file.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("first_contact"));
+    let svg = std::fs::read_to_string(&file).unwrap();
+    assert!(svg.starts_with("<?xml"));
+    assert!(svg.trim_end().ends_with("</svg>"));
+    assert!(svg.matches("class=\"body\"").count() >= 2);
+    assert!(svg.contains("class=\"trajectory\""));
+    assert!(svg.contains("class=\"distance-plot\""));
+    std::fs::remove_file(&file).unwrap();
+    // An unwritable path is an error (status 2).
+    let (code, _, err) = run(&[
+        "run",
+        scene.to_str().unwrap(),
+        "--svg",
+        "/nonexistent-dir/x.svg",
+    ]);
+    assert_eq!(code, 2);
+    assert!(err.contains("cannot write"));
+}

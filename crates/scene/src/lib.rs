@@ -57,6 +57,7 @@ mod motion;
 mod report;
 mod run;
 mod spec;
+mod svg;
 
 pub use batch::{
     BatchOptions, BatchSummary, LayerPolygon, MAX_LAYER_POLYGONS, MAX_LINE_BYTES, batch_pairs,
@@ -80,3 +81,4 @@ pub use spec::{
     BodySpec, Effect, EffectSet, GeneratorSpec, KernelChoice, KeyframeSpec, KindSpec, MotionSpec,
     PairsSpec, PoseSpec, QuerySpec, SceneSpec, TimeSpec,
 };
+pub use svg::render_svg;
