@@ -22,8 +22,12 @@ pub struct Report {
     pub coherence: bool,
     /// The time span.
     pub time: TimeReport,
-    /// One entry per distinct pair, in the order the queries name them.
+    /// One entry per distinct pair, in the order the queries name them; a pair of `within` queries
+    /// that is beyond the threshold at every frame (and asked nothing else) is left out and counted
+    /// in `pairs_beyond`.
     pub pairs: Vec<PairReport>,
+    /// The pairs left out of `pairs` for being beyond their `within` at every frame.
+    pub pairs_beyond: u64,
     /// What each effect computed and what it cost.
     pub costs: Costs,
     /// `true` when some pair failed (an invalid body at some time, or an undecided `first_contact`).
@@ -60,6 +64,8 @@ pub struct PairReport {
     /// once, at the first frame (`frames` has one entry).
     pub moving: bool,
     /// Per-frame results (`distance`, `closest_points`, `vertex_distance`); empty when none asked.
+    /// With `within`, only the frames at which the pair is within the threshold (the others are
+    /// counted in the costs' `within_beyond`).
     pub frames: Vec<FrameResult>,
     /// The `first_contact` result, when asked.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -289,6 +295,9 @@ pub struct Costs {
     pub broad_phase_examined: u64,
     /// Pair-frames answered `beyond` by the broad phase, without a narrow-phase query.
     pub broad_phase_skipped: u64,
+    /// Pair-frames beyond their query's `within` (by the broad or the narrow phase); these frames are
+    /// not in the report.
+    pub within_beyond: u64,
 }
 
 impl Cost {
@@ -324,6 +333,7 @@ impl Costs {
             broad_phase: self.broad_phase.merge(o.broad_phase),
             broad_phase_examined: self.broad_phase_examined + o.broad_phase_examined,
             broad_phase_skipped: self.broad_phase_skipped + o.broad_phase_skipped,
+            within_beyond: self.within_beyond + o.within_beyond,
         }
     }
 
@@ -454,6 +464,13 @@ impl Report {
                 s,
                 "(broad phase: {} box pairs examined, {} pair-frames answered beyond `within` from boxes)",
                 c.broad_phase_examined, c.broad_phase_skipped
+            );
+        }
+        if c.within_beyond > 0 || self.pairs_beyond > 0 {
+            let _ = writeln!(
+                s,
+                "({} pair-frames beyond `within` not listed; {} pairs beyond at every frame left out)",
+                c.within_beyond, self.pairs_beyond
             );
         }
         if self.failed {

@@ -420,7 +420,13 @@ fn run_with<K: Kernel>(
                         f
                     }
                 };
-                state.frames.push(result);
+                if result.status == Some(Status::Beyond) {
+                    // Not stored: a `within` query over many bodies would otherwise keep one
+                    // frame per pair and frame (the report counts them).
+                    local.within_beyond += 1;
+                } else {
+                    state.frames.push(result);
+                }
                 local
             })
             .reduce(Costs::default, Costs::merge);
@@ -449,10 +455,16 @@ fn run_with<K: Kernel>(
         })
         .collect();
 
-    let mut pairs = Vec::with_capacity(plan.jobs.len());
+    let mut pairs = Vec::new();
     let mut failed = false;
+    let mut pairs_beyond = 0u64;
     for ((job, state), (first_contact, local)) in plan.jobs.iter().zip(states).zip(contacts) {
         costs = costs.merge(local);
+        if job.within.is_some() && state.frames.is_empty() && first_contact.is_none() {
+            // Beyond the threshold at every frame, and nothing else asked.
+            pairs_beyond += 1;
+            continue;
+        }
         let (ba, bb) = (&scene.bodies[job.a], &scene.bodies[job.b]);
         let pair_failed = state.frames.iter().any(|f| f.error.is_some())
             || first_contact.as_ref().is_some_and(|c| {
@@ -490,6 +502,7 @@ fn run_with<K: Kernel>(
             frames: time.frames,
         },
         pairs,
+        pairs_beyond,
         costs,
         failed,
     }

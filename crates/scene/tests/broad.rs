@@ -7,8 +7,8 @@ use std::path::Path;
 
 use glam::DVec2;
 use polydist_scene::{
-    Aabb, Origin, Report, RunOptions, Scene, Status, all_pairs_not_farther, load_file, load_str,
-    run,
+    Aabb, FrameResult, Origin, Report, RunOptions, Scene, Status, all_pairs_not_farther, load_file,
+    load_str, run,
 };
 use proptest::prelude::*;
 
@@ -116,19 +116,24 @@ fn thousand_bodies_skip_exactly_the_certainly_far_pairs() {
         c.distance.calls
     );
     assert_eq!(c.broad_phase.calls, scene.time.frames as u64);
-    // Beyond frames carry no value; the others carry the distance, at most 1.5.
-    let mut beyond = 0;
+    // Beyond frames are not listed; the listed ones carry the distance, at most 1.5.
+    let mut listed = 0;
     for p in &report.pairs {
+        assert!(!p.frames.is_empty());
         for f in &p.frames {
-            if f.status == Some(Status::Beyond) {
-                beyond += 1;
-                assert_eq!(f.distance, None);
-            } else {
-                assert!(f.distance.is_some_and(|d| d <= 1.5), "{f:?}");
-            }
+            listed += 1;
+            assert_ne!(f.status, Some(Status::Beyond));
+            assert!(f.distance.is_some_and(|d| d <= 1.5), "{f:?}");
         }
     }
-    assert!(beyond >= far);
+    assert_eq!(listed + c.within_beyond, total);
+    assert!(c.within_beyond >= far);
+    assert_eq!(report.pairs.len() as u64 + report.pairs_beyond, 499_500);
+    assert!(
+        report.pairs.len() < 5_000,
+        "{} pairs listed",
+        report.pairs.len()
+    );
     // Two threads: the same report.
     assert_same(&report, &run(&scene, &opts(true, 2)));
 }
@@ -155,12 +160,8 @@ fn broad_phase_and_threads_do_not_change_results() {
         assert_eq!(base.costs.distance.calls, total - far);
         assert_eq!(base.costs.broad_phase_skipped, far);
         // Hausdorff and CMMR only where the pair is within the threshold.
-        let within = base
-            .pairs
-            .iter()
-            .flat_map(|p| &p.frames)
-            .filter(|f| f.status != Some(Status::Beyond))
-            .count() as u64;
+        let within = base.pairs.iter().flat_map(|p| &p.frames).count() as u64;
+        assert_eq!(within + base.costs.within_beyond, total);
         assert_eq!(base.costs.hausdorff.calls, within);
         assert_eq!(base.costs.cmmr.calls, within);
 
@@ -170,15 +171,25 @@ fn broad_phase_and_threads_do_not_change_results() {
         full_scene.queries[0].within = None;
         let full = run(&full_scene, &opts(true, 2));
         assert_eq!(full.costs.broad_phase.calls, 0);
-        for (p, q) in base.pairs.iter().zip(&full.pairs) {
-            for (f, g) in p.frames.iter().zip(&q.frames) {
-                if f.status == Some(Status::Beyond) {
-                    assert!(g.distance.unwrap() >= 1.0 * (1.0 - 8.0 * f64::EPSILON));
-                } else {
-                    assert_eq!(f, g);
+        let listed: std::collections::HashMap<(&str, &str), &Vec<FrameResult>> = base
+            .pairs
+            .iter()
+            .map(|p| ((p.a.as_str(), p.b.as_str()), &p.frames))
+            .collect();
+        let mut found = 0;
+        for q in &full.pairs {
+            let frames = listed.get(&(q.a.as_str(), q.b.as_str()));
+            for g in &q.frames {
+                match frames.and_then(|fs| fs.iter().find(|f| f.t == g.t)) {
+                    Some(f) => {
+                        found += 1;
+                        assert_eq!(f, g);
+                    }
+                    None => assert!(g.distance.unwrap() >= 1.0 * (1.0 - 8.0 * f64::EPSILON)),
                 }
             }
         }
+        assert_eq!(found, within);
     }
 }
 
@@ -223,7 +234,9 @@ fn a_pair_named_twice_takes_the_loosest_threshold() {
     let text = format!("{text}\n        within = 2.0\n");
     let scene = load_str(&text, &Origin::text("t.toml")).unwrap();
     let report = run(&scene, &RunOptions::default());
-    assert_eq!(report.pairs[0].frames[0].status, Some(Status::Beyond));
+    assert!(report.pairs.is_empty());
+    assert_eq!(report.pairs_beyond, 1);
+    assert_eq!(report.costs.within_beyond, 1);
     assert_eq!(report.costs.broad_phase_skipped, 1);
     assert_eq!(report.costs.distance.calls, 0);
 }
