@@ -16,7 +16,11 @@
 //!   with temporal coherence), `vertex_distance` is McKenna–Toussaint (`O(n + m)`), `first_contact`
 //!   is conservative advancement (Schwartz 1981) with a bracket confirmed by the exact intersection
 //!   test or a certified clearance, `hausdorff` and `cmmr` are Atallah–Ribeiro–Lifschitz (`O(n + m)`);
-//!   the [`Report`] says what each effect computed and what it cost.
+//!   the [`Report`] says what each effect computed and what it cost;
+//! - answers queries with `within` over many bodies through a broad phase ([`sweep_and_prune`] with a
+//!   certified box gap) and evaluates pairs in parallel (rayon), with results independent of both;
+//! - answers pairs of polygons as JSON lines ([`batch_pairs`], [`batch_within`]; docs/batch.md);
+//! - draws a run as SVG ([`render_svg`]).
 //!
 //! `separation` is parsed but refused by the loader with
 //! [`SceneError::EffectNotYetAvailable`] until its algorithm is wired in; every effect of this

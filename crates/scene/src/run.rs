@@ -26,9 +26,13 @@
 //! `D(s) ≥ max(d_i − V·s, d_{i+1} − V·(L − s)) ≥ (d_i + d_{i+1} − V·L) / 2`, a certified lower
 //! bound that is not a sampled minimum.
 //!
-//! # Parallelism later
-//! Jobs are independent given the posed bodies of a frame: the frame loop evaluates a list of jobs
-//! with per-job state (the hint), which a parallel runner can split over threads.
+//! # Many bodies and threads
+//! Jobs are independent given the posed bodies of a frame: each frame poses its bodies in parallel,
+//! runs the broad phase for queries with `within` (crate::broad: sweep-and-prune with a certified box
+//! gap; a pair is skipped only when its boxes are certainly farther apart than `within`), then
+//! evaluates the jobs in parallel (rayon), each with its own state (hint, frames). `first_contact`
+//! pairs run in parallel too. Costs are measured per call on the calling thread and summed, so a
+//! report is the same on any number of threads.
 
 use std::collections::HashMap;
 use std::sync::atomic::{AtomicU64, Ordering};

@@ -222,3 +222,29 @@ fn within_equals_the_exact_all_pairs_answer() {
         );
     }
 }
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(300))]
+    /// Arbitrary input never panics and gets exactly one output line per non-blank line.
+    #[test]
+    fn arbitrary_input_one_line_out_per_line_in(lines in proptest::collection::vec(
+        proptest::prop_oneof![
+            ".{0,40}",
+            r#"\{"a": \[\[-?[0-9]{1,3}(\.[0-9])?, -?[0-9]{1,3}\](, \[-?[0-9]{1,3}, -?[0-9e+]{1,4}\]){0,5}\], "b": \[\[[0-9], [0-9]\]\]( , "within": -?[0-9.]{1,4})?\}"#,
+        ],
+        0..20,
+    )) {
+        let input = lines.join("\n");
+        let mut out = Vec::new();
+        let s = batch_pairs(input.as_bytes(), &mut out, &BatchOptions { chunk: 3, ..BatchOptions::default() }).unwrap();
+        let non_blank = input.lines().filter(|l| !l.trim().is_empty()).count() as u64;
+        proptest::prop_assert_eq!(s.lines, non_blank);
+        proptest::prop_assert_eq!(s.answered + s.errors, s.lines);
+        let text = String::from_utf8(out).unwrap();
+        proptest::prop_assert_eq!(text.lines().count() as u64, s.lines);
+        for l in text.lines() {
+            let v: Value = serde_json::from_str(l).unwrap();
+            proptest::prop_assert!(v.get("line").is_some());
+        }
+    }
+}
