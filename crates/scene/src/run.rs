@@ -438,32 +438,39 @@ fn run_with<K: Kernel>(
         progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
     }
 
-    // first_contact, in parallel over the pairs.
-    let contacts: Vec<(Option<ContactResult>, Costs)> = plan
-        .jobs
+    // first_contact, in parallel over the pairs that ask for it (results in job order).
+    let contact_jobs: Vec<usize> = (0..plan.jobs.len())
+        .filter(|&j| plan.jobs[j].effects.contains(Effect::FirstContact))
+        .collect();
+    let contacts: Vec<(ContactResult, Costs)> = contact_jobs
         .par_iter()
-        .map(|job| {
+        .map(|&j| {
+            let job = &plan.jobs[j];
             let mut local = Costs::default();
-            let r = job.effects.contains(Effect::FirstContact).then(|| {
-                let (ba, bb) = (&scene.bodies[job.a], &scene.bodies[job.b]);
-                let mut counts = ContactCounts::default();
-                let r = meter.measure(&mut local.first_contact, || {
-                    first_contact::<K>(scene, ba, bb, job.contact, coherence, &mut counts)
-                });
-                local.first_contact_steps += counts.steps;
-                local.first_contact_intersection_tests += counts.intersection_tests;
-                progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
-                r
+            let (ba, bb) = (&scene.bodies[job.a], &scene.bodies[job.b]);
+            let mut counts = ContactCounts::default();
+            let r = meter.measure(&mut local.first_contact, || {
+                first_contact::<K>(scene, ba, bb, job.contact, coherence, &mut counts)
             });
+            local.first_contact_steps += counts.steps;
+            local.first_contact_intersection_tests += counts.intersection_tests;
+            progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
             (r, local)
         })
         .collect();
+    let mut contacts = contact_jobs.into_iter().zip(contacts).peekable();
 
     let mut pairs = Vec::new();
     let mut failed = false;
     let mut pairs_beyond = 0u64;
-    for ((job, state), (first_contact, local)) in plan.jobs.iter().zip(states).zip(contacts) {
-        costs = costs.merge(local);
+    for (j, (job, state)) in plan.jobs.iter().zip(states).enumerate() {
+        let first_contact = match contacts.peek() {
+            Some((cj, _)) if *cj == j => contacts.next().map(|(_, (r, local))| {
+                costs = costs.merge(local);
+                r
+            }),
+            _ => None,
+        };
         if job.within.is_some() && state.frames.is_empty() && first_contact.is_none() {
             // Beyond the threshold at every frame, and nothing else asked.
             pairs_beyond += 1;
