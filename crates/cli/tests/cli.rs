@@ -645,3 +645,174 @@ fn the_documented_example_is_a_fixture_and_runs() {
         assert_eq!(code, 0, "{}: {out}{err}", p.display());
     }
 }
+
+/// Runs the binary with `stdin` as its input.
+fn run_stdin(args: &[&str], stdin: &str) -> (i32, String, String) {
+    use std::io::Write as _;
+    use std::process::Stdio;
+    let mut child = bin()
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    child
+        .stdin
+        .take()
+        .unwrap()
+        .write_all(stdin.as_bytes())
+        .unwrap();
+    let out = child.wait_with_output().unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8(out.stdout).unwrap(),
+        String::from_utf8(out.stderr).unwrap(),
+    )
+}
+
+/// `polydist batch` on stdin: answers in input order, brute-force distances, an error line that
+/// does not stop the batch, exit status 1 for it; the same output on 1 and 2 threads.
+#[test]
+fn batch_streams_answers_and_error_lines() {
+    let mut input = String::new();
+    let mut want = Vec::new();
+    for k in 0..50 {
+        let x = 2.0 + f64::from(k) * 0.25;
+        // A unit square at the origin and a triangle at x: distance x - 1 (its left vertex faces
+        // the square's right edge).
+        input += &format!(
+            "{{\"id\": {k}, \"a\": [[0, 0], [1, 0], [1, 1], [0, 1]], \"b\": [[{x}, 0.5], [{}, 0], [{}, 1]]}}\n",
+            x + 1.0,
+            x + 1.0
+        );
+        want.push(x - 1.0);
+    }
+    input += "not json\n";
+    let (code, out, err) = run_stdin(&["batch", "--effects", "distance,closest_points"], &input);
+    assert_eq!(code, 1, "{err}");
+    let lines: Vec<Value> = out
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    assert_eq!(lines.len(), 51);
+    for (k, w) in want.iter().enumerate() {
+        assert_eq!(lines[k]["id"], k);
+        assert_eq!(lines[k]["distance"].as_f64().unwrap(), *w);
+        assert_eq!(lines[k]["closest_points"]["feature_b"]["kind"], "vertex");
+    }
+    assert!(lines[50]["error"].as_str().unwrap().contains("line 51"));
+    let (code1, out1, _) = run_stdin(
+        &[
+            "batch",
+            "--threads",
+            "1",
+            "--effects",
+            "distance,closest_points",
+        ],
+        &input,
+    );
+    assert_eq!((code1, out1), (1, out));
+    // Unknown effects are refused before reading.
+    let (code, _, err) = run_stdin(&["batch", "--effects", "speed"], "");
+    assert_eq!(code, 2);
+    assert!(err.contains("unknown effect 'speed'"));
+}
+
+/// `polydist batch --within R A B`: every pair of the two layers within R, against brute force.
+#[test]
+fn batch_within_two_layers() {
+    let dir = std::env::temp_dir().join(format!("polydist-cli-within-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let square = |x: f64, y: f64| {
+        format!(
+            "[[{x}, {y}], [{}, {y}], [{}, {}], [{x}, {}]]",
+            x + 1.0,
+            x + 1.0,
+            y + 1.0,
+            y + 1.0
+        )
+    };
+    let mut a = String::new();
+    let mut b = String::new();
+    let mut want = Vec::new();
+    for i in 0..10 {
+        for j in 0..10 {
+            let (ax, ay) = (f64::from(i) * 3.0, f64::from(j) * 3.0);
+            a += &format!(
+                "{{\"id\": \"a{i}_{j}\", \"vertices\": {}}}\n",
+                square(ax, ay)
+            );
+            // b squares: shifted by 1.25 in x from a, so the nearest a square is 0.25 away, the
+            // next 0.75, the others farther.
+            let bx = ax + 1.25;
+            b += &format!(
+                "{{\"id\": \"b{i}_{j}\", \"vertices\": {}}}\n",
+                square(bx, ay)
+            );
+            want.push((format!("a{i}_{j}"), format!("b{i}_{j}")));
+        }
+    }
+    b += "{\"vertices\": []}\n";
+    std::fs::write(dir.join("a.jsonl"), &a).unwrap();
+    std::fs::write(dir.join("b.jsonl"), &b).unwrap();
+    let (code, out, err) = run(&[
+        "batch",
+        "--within",
+        "0.5",
+        dir.join("a.jsonl").to_str().unwrap(),
+        dir.join("b.jsonl").to_str().unwrap(),
+    ]);
+    assert_eq!(code, 1, "{err}");
+    let lines: Vec<Value> = out
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    assert_eq!(lines[0]["layer"], "b");
+    assert_eq!(lines[0]["line"], 101);
+    let mut got: Vec<(String, String)> = lines[1..]
+        .iter()
+        .map(|v| {
+            assert_eq!(v["distance"], 0.25);
+            (
+                v["a"].as_str().unwrap().to_owned(),
+                v["b"].as_str().unwrap().to_owned(),
+            )
+        })
+        .collect();
+    got.sort();
+    want.sort();
+    assert_eq!(got, want);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// `run --svg FILE` writes an SVG document with the bodies, next to the usual table.
+#[test]
+fn run_writes_svg() {
+    let file = std::env::temp_dir().join(format!("polydist-cli-{}.svg", std::process::id()));
+    let scene = fixtures().join("scenes/corridor.toml");
+    let (code, out, err) = run(&[
+        "run",
+        scene.to_str().unwrap(),
+        "--svg",
+        file.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("first_contact"));
+    let svg = std::fs::read_to_string(&file).unwrap();
+    assert!(svg.starts_with("<?xml"));
+    assert!(svg.trim_end().ends_with("</svg>"));
+    assert!(svg.matches("class=\"body\"").count() >= 2);
+    assert!(svg.contains("class=\"trajectory\""));
+    assert!(svg.contains("class=\"distance-plot\""));
+    std::fs::remove_file(&file).unwrap();
+    // An unwritable path is an error (status 2).
+    let (code, _, err) = run(&[
+        "run",
+        scene.to_str().unwrap(),
+        "--svg",
+        "/nonexistent-dir/x.svg",
+    ]);
+    assert_eq!(code, 2);
+    assert!(err.contains("cannot write"));
+}

@@ -16,7 +16,11 @@
 //!   with temporal coherence), `vertex_distance` is McKenna–Toussaint (`O(n + m)`), `first_contact`
 //!   is conservative advancement (Schwartz 1981) with a bracket confirmed by the exact intersection
 //!   test or a certified clearance, `hausdorff` and `cmmr` are Atallah–Ribeiro–Lifschitz (`O(n + m)`);
-//!   the [`Report`] says what each effect computed and what it cost.
+//!   the [`Report`] says what each effect computed and what it cost;
+//! - answers queries with `within` over many bodies through a broad phase ([`sweep_and_prune`] with a
+//!   certified box gap) and evaluates pairs in parallel (rayon), with results independent of both;
+//! - answers pairs of polygons as JSON lines ([`batch_pairs`], [`batch_within`]; docs/batch.md);
+//! - draws a run as SVG ([`render_svg`]).
 //!
 //! `separation` is parsed but refused by the loader with
 //! [`SceneError::EffectNotYetAvailable`] until its algorithm is wired in; every effect of this
@@ -48,6 +52,8 @@
 //! # Ok::<(), polydist_scene::SceneErrors>(())
 //! ```
 
+mod batch;
+mod broad;
 mod error;
 mod generate;
 mod load;
@@ -55,7 +61,13 @@ mod motion;
 mod report;
 mod run;
 mod spec;
+mod svg;
 
+pub use batch::{
+    BatchOptions, BatchSummary, LayerPolygon, MAX_LAYER_POLYGONS, MAX_LINE_BYTES, batch_pairs,
+    batch_within, read_layer,
+};
+pub use broad::{Aabb, SweepStats, all_pairs_not_farther, sweep_and_prune};
 pub use error::{SceneError, SceneErrors};
 pub use generate::MAX_VERTICES;
 pub use load::{
@@ -68,8 +80,9 @@ pub use report::{
     ClosestPoints, ContactOutcome, ContactResult, Cost, Costs, FeatureRef, FrameResult, PairReport,
     REPORT_VERSION, Report, Status, TimeReport, VertexDistanceResult,
 };
-pub use run::{PairJob, Plan, RunOptions, plan, run};
+pub use run::{PairJob, Plan, RunOptions, plan, run, run_with_progress};
 pub use spec::{
     BodySpec, Effect, EffectSet, GeneratorSpec, KernelChoice, KeyframeSpec, KindSpec, MotionSpec,
     PairsSpec, PoseSpec, QuerySpec, SceneSpec, TimeSpec,
 };
+pub use svg::render_svg;

@@ -119,6 +119,9 @@ pub struct Query {
     pub effects: EffectSet,
     /// `first_contact`'s parameters.
     pub contact: ContactParams,
+    /// The distance threshold of the per-frame effects (`None`: every pair; see
+    /// [`QuerySpec::within`](crate::QuerySpec::within)).
+    pub within: Option<f64>,
 }
 
 /// The validated time span.
@@ -344,6 +347,14 @@ pub fn validate(spec: &SceneSpec, origin: &Origin) -> Result<Scene, SceneErrors>
                 reason: "max_steps must be at least 1".to_owned(),
             });
         }
+        if let Some(r) = q.within {
+            if r.is_nan() || r < 0.0 {
+                errors.push(SceneError::BadParameter {
+                    query: name.clone(),
+                    reason: format!("within must be >= 0 (got {r})"),
+                });
+            }
+        }
         let mut pairs = Vec::new();
         match &q.pairs {
             PairsSpec::All => {
@@ -406,6 +417,7 @@ pub fn validate(spec: &SceneSpec, origin: &Origin) -> Result<Scene, SceneErrors>
                 tolerance,
                 max_steps,
             },
+            within: q.within.filter(|r| r.is_finite()),
         });
     }
     if pair_count > MAX_PAIRS {

@@ -22,8 +22,12 @@ pub struct Report {
     pub coherence: bool,
     /// The time span.
     pub time: TimeReport,
-    /// One entry per distinct pair, in the order the queries name them.
+    /// One entry per distinct pair, in the order the queries name them; a pair of `within` queries
+    /// that is beyond the threshold at every frame (and asked nothing else) is left out and counted
+    /// in `pairs_beyond`.
     pub pairs: Vec<PairReport>,
+    /// The pairs left out of `pairs` for being beyond their `within` at every frame.
+    pub pairs_beyond: u64,
     /// What each effect computed and what it cost.
     pub costs: Costs,
     /// `true` when some pair failed (an invalid body at some time, or an undecided `first_contact`).
@@ -60,6 +64,8 @@ pub struct PairReport {
     /// once, at the first frame (`frames` has one entry).
     pub moving: bool,
     /// Per-frame results (`distance`, `closest_points`, `vertex_distance`); empty when none asked.
+    /// With `within`, only the frames at which the pair is within the threshold (the others are
+    /// counted in the costs' `within_beyond`).
     pub frames: Vec<FrameResult>,
     /// The `first_contact` result, when asked.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -80,6 +86,9 @@ pub enum Status {
     Overlapping,
     /// A body is not a valid polygon at this frame (see `error`).
     Invalid,
+    /// The pair is farther apart than its query's `within` (decided exactly, by the broad phase's
+    /// certified box gap or by the narrow phase); no other field is computed.
+    Beyond,
 }
 
 /// A feature in the body's own (caller's) vertex indices.
@@ -279,6 +288,89 @@ pub struct Costs {
     pub first_contact_steps: u64,
     /// `first_contact`: exact intersection tests (probes and confirmations).
     pub first_contact_intersection_tests: u64,
+    /// The broad phase (bounding boxes and sweep-and-prune) of queries with `within`: `calls` are
+    /// frames swept.
+    pub broad_phase: Cost,
+    /// Box pairs the sweep examined with the full box test.
+    pub broad_phase_examined: u64,
+    /// Pair-frames answered `beyond` by the broad phase, without a narrow-phase query.
+    pub broad_phase_skipped: u64,
+    /// Pair-frames beyond their query's `within` (by the broad or the narrow phase); these frames are
+    /// not in the report.
+    pub within_beyond: u64,
+}
+
+impl Cost {
+    /// The sum of two costs (predicates: `null` only when both are).
+    #[must_use]
+    pub fn merge(self, other: Cost) -> Cost {
+        Cost {
+            calls: self.calls + other.calls,
+            predicates: match (self.predicates, other.predicates) {
+                (None, None) => None,
+                (a, b) => Some(a.unwrap_or(0) + b.unwrap_or(0)),
+            },
+            micros: self.micros.saturating_add(other.micros),
+        }
+    }
+}
+
+impl Costs {
+    /// The sum of two sets of costs (how the per-thread costs of a parallel run are aggregated).
+    #[must_use]
+    pub fn merge(self, o: Costs) -> Costs {
+        Costs {
+            pose: self.pose.merge(o.pose),
+            distance: self.distance.merge(o.distance),
+            distance_hinted: self.distance_hinted + o.distance_hinted,
+            vertex_distance: self.vertex_distance.merge(o.vertex_distance),
+            hausdorff: self.hausdorff.merge(o.hausdorff),
+            cmmr: self.cmmr.merge(o.cmmr),
+            first_contact: self.first_contact.merge(o.first_contact),
+            first_contact_steps: self.first_contact_steps + o.first_contact_steps,
+            first_contact_intersection_tests: self.first_contact_intersection_tests
+                + o.first_contact_intersection_tests,
+            broad_phase: self.broad_phase.merge(o.broad_phase),
+            broad_phase_examined: self.broad_phase_examined + o.broad_phase_examined,
+            broad_phase_skipped: self.broad_phase_skipped + o.broad_phase_skipped,
+            within_beyond: self.within_beyond + o.within_beyond,
+        }
+    }
+
+    /// The same costs with every wall time set to zero (to compare the counts of two runs).
+    #[must_use]
+    pub fn without_times(mut self) -> Costs {
+        for c in [
+            &mut self.pose,
+            &mut self.distance,
+            &mut self.vertex_distance,
+            &mut self.hausdorff,
+            &mut self.cmmr,
+            &mut self.first_contact,
+            &mut self.broad_phase,
+        ] {
+            c.micros = 0;
+        }
+        self
+    }
+}
+
+impl FrameResult {
+    /// A frame with only its time and status.
+    #[must_use]
+    pub fn empty(t: f64, status: Status) -> FrameResult {
+        FrameResult {
+            t,
+            status: Some(status),
+            distance: None,
+            squared_distance: None,
+            closest_points: None,
+            vertex_distance: None,
+            hausdorff: None,
+            cmmr: None,
+            error: None,
+        }
+    }
 }
 
 fn fmt_num(x: f64) -> String {
@@ -361,11 +453,26 @@ impl Report {
         cost("hausdorff", &c.hausdorff);
         cost("cmmr", &c.cmmr);
         cost("first_contact", &c.first_contact);
+        cost("broad_phase", &c.broad_phase);
         let _ = writeln!(
             s,
             "({} distance queries started from a hint; first_contact: {} steps, {} intersection tests)",
             c.distance_hinted, c.first_contact_steps, c.first_contact_intersection_tests
         );
+        if c.broad_phase.calls > 0 {
+            let _ = writeln!(
+                s,
+                "(broad phase: {} box pairs examined, {} pair-frames answered beyond `within` from boxes)",
+                c.broad_phase_examined, c.broad_phase_skipped
+            );
+        }
+        if c.within_beyond > 0 || self.pairs_beyond > 0 {
+            let _ = writeln!(
+                s,
+                "({} pair-frames beyond `within` not listed; {} pairs beyond at every frame left out)",
+                c.within_beyond, self.pairs_beyond
+            );
+        }
         if self.failed {
             let _ = writeln!(s, "\nSOME PAIRS FAILED (see above)");
         }
@@ -409,7 +516,7 @@ fn pair_lines(p: &PairReport) -> Vec<(String, String)> {
             Status::Disjoint => "",
             Status::Touching => " (touching)",
             Status::Overlapping => " (overlapping)",
-            Status::Invalid => "",
+            Status::Invalid | Status::Beyond => "",
         });
         let label = if p.moving { "min " } else { "" };
         out.push((

@@ -26,21 +26,29 @@
 //! `D(s) ≥ max(d_i − V·s, d_{i+1} − V·(L − s)) ≥ (d_i + d_{i+1} − V·L) / 2`, a certified lower
 //! bound that is not a sampled minimum.
 //!
-//! # Parallelism later
-//! Jobs are independent given the posed bodies of a frame: the frame loop evaluates a list of jobs
-//! with per-job state (the hint), which a parallel runner can split over threads.
+//! # Many bodies and threads
+//! Jobs are independent given the posed bodies of a frame: each frame poses its bodies in parallel,
+//! runs the broad phase for queries with `within` (crate::broad: sweep-and-prune with a certified box
+//! gap; a pair is skipped only when its boxes are certainly farther apart than `within`), then
+//! evaluates the jobs in parallel (rayon), each with its own state (hint, frames). `first_contact`
+//! pairs run in parallel too. Costs are measured per call on the calling thread and summed, so a
+//! report is the same on any number of threads.
 
 use std::collections::HashMap;
+use std::sync::atomic::{AtomicU64, Ordering};
 use std::time::Instant;
+
+use rayon::prelude::*;
 
 use glam::DVec2;
 use polydist_convex::{
-    Direction, Hint, Pose, Separation, VertexToPolygon, cmmr_value_with, distance_with,
-    distance_with_hint, hausdorff_with, intersects, min_vertex_distance_with,
+    Direction, Hint, Pose, Separation, VertexToPolygon, Within, cmmr_value_with, distance_with,
+    distance_with_hint, distance_within, hausdorff_with, intersects, min_vertex_distance_with,
 };
 use polydist_polygon::predicates::{Counted, Exact, Fast, Kernel, Robust, predicate_counts};
 use polydist_polygon::{ConvexPolygon, Feature, PolygonError};
 
+use crate::broad::{Aabb, sweep_and_prune};
 use crate::load::{Body, ContactParams, Scene, Shape};
 use crate::motion::{Motion, down, pose_error, relative_speed_bound, up};
 use crate::report::{
@@ -64,6 +72,9 @@ pub struct PairJob {
     pub contact: ContactParams,
     /// Whether either body moves.
     pub moving: bool,
+    /// The distance threshold of the per-frame effects: the loosest of the queries naming the pair
+    /// (`None` when one of them has none).
+    pub within: Option<f64>,
 }
 
 impl PairJob {
@@ -114,10 +125,15 @@ pub fn plan(scene: &Scene) -> Plan {
                     contact: q.contact,
                     moving: !(scene.bodies[a].motion.is_static()
                         && scene.bodies[b].motion.is_static()),
+                    within: q.within,
                 });
                 jobs.len() - 1
             });
             let job = &mut jobs[j];
+            job.within = match (job.within, q.within) {
+                (Some(x), Some(y)) => Some(x.max(y)),
+                _ => None,
+            };
             if !job.queries.contains(&k) {
                 job.queries.push(k);
             }
@@ -139,8 +155,15 @@ pub struct RunOptions {
     pub kernel: Option<KernelChoice>,
     /// Overrides the scene's temporal coherence.
     pub coherence: Option<bool>,
-    /// Count exact predicates per effect (through `Counted`; a thread-local increment per predicate).
+    /// Count exact predicates per effect (through `Counted`; a thread-local increment per predicate,
+    /// measured around each call on the thread that makes it and summed over the threads).
     pub count_predicates: bool,
+    /// Answer pairs of queries with `within` from bounding boxes where that is certain (the results
+    /// are identical either way; only the cost changes). Default `true`.
+    pub broad_phase: bool,
+    /// The number of threads: `None` uses rayon's global pool (all cores, or `RAYON_NUM_THREADS`);
+    /// `Some(n)` runs on a pool of `n` threads. The results are identical for every count.
+    pub threads: Option<usize>,
 }
 
 impl Default for RunOptions {
@@ -149,6 +172,8 @@ impl Default for RunOptions {
             kernel: None,
             coherence: None,
             count_predicates: true,
+            broad_phase: true,
+            threads: None,
         }
     }
 }
@@ -197,27 +222,59 @@ impl Default for RunOptions {
 /// ```
 #[must_use]
 pub fn run(scene: &Scene, options: &RunOptions) -> Report {
-    let kernel = options.kernel.unwrap_or(scene.kernel);
-    match (kernel, options.count_predicates) {
-        (KernelChoice::Fast, true) => run_with::<Counted<Fast>>(scene, options, kernel),
-        (KernelChoice::Fast, false) => run_with::<Fast>(scene, options, kernel),
-        (KernelChoice::Robust, true) => run_with::<Counted<Robust>>(scene, options, kernel),
-        (KernelChoice::Robust, false) => run_with::<Robust>(scene, options, kernel),
-        (KernelChoice::Exact, true) => run_with::<Counted<Exact>>(scene, options, kernel),
-        (KernelChoice::Exact, false) => run_with::<Exact>(scene, options, kernel),
+    run_with_progress(scene, options, &|_, _| {})
+}
+
+/// [`run`], calling `progress(done, total)` after each frame and each `first_contact` pair (from
+/// any thread; `total` is the number of frames with per-frame work plus the `first_contact` pairs).
+/// `polydist run` draws its progress bar with it.
+///
+/// # Complexity
+/// That of [`run`], plus one call of `progress` per frame and per `first_contact` pair.
+#[must_use]
+pub fn run_with_progress(
+    scene: &Scene,
+    options: &RunOptions,
+    progress: &(dyn Fn(u64, u64) + Sync),
+) -> Report {
+    let go = || {
+        let kernel = options.kernel.unwrap_or(scene.kernel);
+        match (kernel, options.count_predicates) {
+            (KernelChoice::Fast, true) => {
+                run_with::<Counted<Fast>>(scene, options, kernel, progress)
+            }
+            (KernelChoice::Fast, false) => run_with::<Fast>(scene, options, kernel, progress),
+            (KernelChoice::Robust, true) => {
+                run_with::<Counted<Robust>>(scene, options, kernel, progress)
+            }
+            (KernelChoice::Robust, false) => run_with::<Robust>(scene, options, kernel, progress),
+            (KernelChoice::Exact, true) => {
+                run_with::<Counted<Exact>>(scene, options, kernel, progress)
+            }
+            (KernelChoice::Exact, false) => run_with::<Exact>(scene, options, kernel, progress),
+        }
+    };
+    match options.threads.map(|t| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(t.max(1))
+            .build()
+    }) {
+        Some(Ok(pool)) => pool.install(go),
+        // No pool could be made: the global pool gives the same results.
+        _ => go(),
     }
 }
 
 /// A body placed at a time: the re-validated polygon (its caller index `k` is the body's internal
 /// vertex `k`) and the pose.
-struct Posed {
-    poly: ConvexPolygon,
-    pose: Pose,
+pub(crate) struct Posed {
+    pub(crate) poly: ConvexPolygon,
+    pub(crate) pose: Pose,
 }
 
 /// Measures the calls, predicates and time of a stage.
-struct Meter {
-    count: bool,
+pub(crate) struct Meter {
+    pub(crate) count: bool,
 }
 
 impl Meter {
@@ -239,7 +296,19 @@ impl Meter {
     }
 }
 
-fn run_with<K: Kernel>(scene: &Scene, options: &RunOptions, kernel: KernelChoice) -> Report {
+/// Per-job state of the frame loop: the coherence hint and the frames so far.
+#[derive(Default)]
+struct JobState {
+    hint: Option<Hint>,
+    frames: Vec<FrameResult>,
+}
+
+fn run_with<K: Kernel>(
+    scene: &Scene,
+    options: &RunOptions,
+    kernel: KernelChoice,
+    progress: &(dyn Fn(u64, u64) + Sync),
+) -> Report {
     let coherence = options.coherence.unwrap_or(scene.coherence);
     let meter = Meter {
         count: options.count_predicates,
@@ -248,72 +317,167 @@ fn run_with<K: Kernel>(scene: &Scene, options: &RunOptions, kernel: KernelChoice
     let mut costs = Costs::default();
     let time = scene.time;
     let n = scene.bodies.len();
+    let contact_jobs = plan
+        .jobs
+        .iter()
+        .filter(|j| j.effects.contains(Effect::FirstContact))
+        .count() as u64;
+    let has_frame_jobs = plan.jobs.iter().any(PairJob::per_frame);
+    let total = if has_frame_jobs {
+        time.frames as u64
+    } else {
+        0
+    } + contact_jobs;
+    let done = AtomicU64::new(0);
 
     // Per-frame effects: frame-major, so each body is posed once per frame for all its pairs.
-    let frame_jobs: Vec<usize> = (0..plan.jobs.len())
-        .filter(|&j| plan.jobs[j].per_frame())
-        .collect();
-    let mut frames: Vec<Vec<FrameResult>> = vec![Vec::new(); plan.jobs.len()];
-    let mut hints: Vec<Option<Hint>> = vec![None; plan.jobs.len()];
+    let is_frame_job: Vec<bool> = plan.jobs.iter().map(PairJob::per_frame).collect();
+    let mut states: Vec<JobState> = (0..plan.jobs.len()).map(|_| JobState::default()).collect();
     let mut needed = vec![false; n];
-    for &j in &frame_jobs {
-        needed[plan.jobs[j].a] = true;
-        needed[plan.jobs[j].b] = true;
+    // Bodies of jobs with a threshold: the broad phase's boxes.
+    let mut in_broad = vec![false; n];
+    let mut broad_r = f64::NEG_INFINITY;
+    let mut job_of_pair: HashMap<(usize, usize), usize> = HashMap::new();
+    for (j, job) in plan.jobs.iter().enumerate() {
+        if !is_frame_job[j] {
+            continue;
+        }
+        needed[job.a] = true;
+        needed[job.b] = true;
+        if let (true, Some(r)) = (options.broad_phase, job.within) {
+            in_broad[job.a] = true;
+            in_broad[job.b] = true;
+            broad_r = broad_r.max(r);
+            job_of_pair.insert((job.a.min(job.b), job.a.max(job.b)), j);
+        }
     }
+    let broad = !job_of_pair.is_empty();
+    let mut near = vec![false; plan.jobs.len()];
     let mut posed: Vec<Option<Result<Posed, String>>> = (0..n).map(|_| None).collect();
-    for k in 0..time.frames {
+    for k in 0..(if has_frame_jobs { time.frames } else { 0 }) {
         let t = time.frame(k);
-        for i in 0..n {
-            let body = &scene.bodies[i];
-            let stale = !body.motion.is_static() || posed[i].is_none();
-            if needed[i] && stale {
-                posed[i] = Some(meter.measure_uncounted(&mut costs.pose, || pose_body(body, t)));
-            }
-        }
-        for &j in &frame_jobs {
-            let job = &plan.jobs[j];
-            if !job.moving && k > 0 {
-                continue;
-            }
-            let (Some(pa), Some(pb)) = (&posed[job.a], &posed[job.b]) else {
-                continue;
-            };
-            let (ba, bb) = (&scene.bodies[job.a], &scene.bodies[job.b]);
-            let result = match (pa, pb) {
-                (Ok(pa), Ok(pb)) => {
-                    let hint = (coherence && job.moving).then_some(&mut hints[j]);
-                    eval_frame::<K>(job, t, (ba, pa), (bb, pb), hint, &meter, &mut costs)
+        // Posing, in parallel over the bodies that need it.
+        let pose_cost = posed
+            .par_iter_mut()
+            .enumerate()
+            .filter(|(i, slot)| {
+                needed[*i] && (!scene.bodies[*i].motion.is_static() || slot.is_none())
+            })
+            .map(|(i, slot)| {
+                let mut c = Cost::default();
+                *slot = Some(meter.measure_uncounted(&mut c, || pose_body(&scene.bodies[i], t)));
+                c
+            })
+            .reduce(Cost::default, Cost::merge);
+        costs.pose = costs.pose.merge(pose_cost);
+
+        // The broad phase: which thresholded jobs may be near at this frame.
+        if broad && (k == 0 || scene.bodies.iter().any(|b| !b.motion.is_static())) {
+            let mut cost = Cost::default();
+            meter.measure_uncounted(&mut cost, || {
+                let boxes: Vec<Option<Aabb>> = (0..n)
+                    .map(|i| match (&posed[i], in_broad[i]) {
+                        (Some(Ok(p)), true) => Aabb::of(p.poly.vertices()),
+                        _ => None,
+                    })
+                    .collect();
+                let (candidates, stats) = sweep_and_prune(&boxes, broad_r);
+                near.iter_mut().for_each(|x| *x = false);
+                for (a, b) in candidates {
+                    if let Some(&j) = job_of_pair.get(&(a, b)) {
+                        let r = plan.jobs[j].within.unwrap_or(f64::INFINITY);
+                        let (ba, bb) = (boxes[a], boxes[b]);
+                        near[j] =
+                            !matches!((ba, bb), (Some(x), Some(y)) if x.certainly_farther(&y, r));
+                    }
                 }
-                (Err(e), _) | (_, Err(e)) => FrameResult {
-                    t,
-                    status: Some(Status::Invalid),
-                    distance: None,
-                    squared_distance: None,
-                    closest_points: None,
-                    vertex_distance: None,
-                    hausdorff: None,
-                    cmmr: None,
-                    error: Some(e.clone()),
-                },
-            };
-            frames[j].push(result);
+                costs.broad_phase_examined += stats.examined;
+            });
+            costs.broad_phase = costs.broad_phase.merge(cost);
         }
+
+        let near = &near;
+        let posed = &posed;
+        let frame_costs = states
+            .par_iter_mut()
+            .enumerate()
+            .filter(|(j, _)| is_frame_job[*j] && (plan.jobs[*j].moving || k == 0))
+            .map(|(j, state)| {
+                let job = &plan.jobs[j];
+                let mut local = Costs::default();
+                let (Some(pa), Some(pb)) = (&posed[job.a], &posed[job.b]) else {
+                    return local;
+                };
+                let (ba, bb) = (&scene.bodies[job.a], &scene.bodies[job.b]);
+                let result = match (pa, pb) {
+                    (Ok(_), Ok(_)) if broad && job.within.is_some() && !near[j] => {
+                        local.broad_phase_skipped += 1;
+                        FrameResult::empty(t, Status::Beyond)
+                    }
+                    (Ok(pa), Ok(pb)) => {
+                        let hint = (coherence && job.moving).then_some(&mut state.hint);
+                        eval_frame::<K>(job, t, (ba, pa), (bb, pb), hint, &meter, &mut local)
+                    }
+                    (Err(e), _) | (_, Err(e)) => {
+                        let mut f = FrameResult::empty(t, Status::Invalid);
+                        f.error = Some(e.clone());
+                        f
+                    }
+                };
+                if result.status == Some(Status::Beyond) {
+                    // Not stored: a `within` query over many bodies would otherwise keep one
+                    // frame per pair and frame (the report counts them).
+                    local.within_beyond += 1;
+                } else {
+                    state.frames.push(result);
+                }
+                local
+            })
+            .reduce(Costs::default, Costs::merge);
+        costs = costs.merge(frame_costs);
+        progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
     }
 
-    let mut pairs = Vec::with_capacity(plan.jobs.len());
-    let mut failed = false;
-    for (j, job) in plan.jobs.iter().enumerate() {
-        let (ba, bb) = (&scene.bodies[job.a], &scene.bodies[job.b]);
-        let first_contact = job.effects.contains(Effect::FirstContact).then(|| {
+    // first_contact, in parallel over the pairs that ask for it (results in job order).
+    let contact_jobs: Vec<usize> = (0..plan.jobs.len())
+        .filter(|&j| plan.jobs[j].effects.contains(Effect::FirstContact))
+        .collect();
+    let contacts: Vec<(ContactResult, Costs)> = contact_jobs
+        .par_iter()
+        .map(|&j| {
+            let job = &plan.jobs[j];
+            let mut local = Costs::default();
+            let (ba, bb) = (&scene.bodies[job.a], &scene.bodies[job.b]);
             let mut counts = ContactCounts::default();
-            let r = meter.measure(&mut costs.first_contact, || {
+            let r = meter.measure(&mut local.first_contact, || {
                 first_contact::<K>(scene, ba, bb, job.contact, coherence, &mut counts)
             });
-            costs.first_contact_steps += counts.steps;
-            costs.first_contact_intersection_tests += counts.intersection_tests;
-            r
-        });
-        let pair_failed = frames[j].iter().any(|f| f.error.is_some())
+            local.first_contact_steps += counts.steps;
+            local.first_contact_intersection_tests += counts.intersection_tests;
+            progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
+            (r, local)
+        })
+        .collect();
+    let mut contacts = contact_jobs.into_iter().zip(contacts).peekable();
+
+    let mut pairs = Vec::new();
+    let mut failed = false;
+    let mut pairs_beyond = 0u64;
+    for (j, (job, state)) in plan.jobs.iter().zip(states).enumerate() {
+        let first_contact = match contacts.peek() {
+            Some((cj, _)) if *cj == j => contacts.next().map(|(_, (r, local))| {
+                costs = costs.merge(local);
+                r
+            }),
+            _ => None,
+        };
+        if job.within.is_some() && state.frames.is_empty() && first_contact.is_none() {
+            // Beyond the threshold at every frame, and nothing else asked.
+            pairs_beyond += 1;
+            continue;
+        }
+        let (ba, bb) = (&scene.bodies[job.a], &scene.bodies[job.b]);
+        let pair_failed = state.frames.iter().any(|f| f.error.is_some())
             || first_contact.as_ref().is_some_and(|c| {
                 matches!(
                     c.outcome,
@@ -332,7 +496,7 @@ fn run_with<K: Kernel>(scene: &Scene, options: &RunOptions, kernel: KernelChoice
                 .collect(),
             effects: job.effects.iter().map(Effect::name).collect(),
             moving: job.moving,
-            frames: std::mem::take(&mut frames[j]),
+            frames: state.frames,
             first_contact,
             failed: pair_failed,
         });
@@ -349,6 +513,7 @@ fn run_with<K: Kernel>(scene: &Scene, options: &RunOptions, kernel: KernelChoice
             frames: time.frames,
         },
         pairs,
+        pairs_beyond,
         costs,
         failed,
     }
@@ -357,7 +522,7 @@ fn run_with<K: Kernel>(scene: &Scene, options: &RunOptions, kernel: KernelChoice
 /// The body at time `t`: its internal (strictly convex, counter-clockwise) vertices moved by the
 /// pose and validated again, so that the posed polygon's caller index `k` is the body's internal
 /// vertex `k`. An error names the body, the time and the body's own (caller) vertex.
-fn pose_body(body: &Body, t: f64) -> Result<Posed, String> {
+pub(crate) fn pose_body(body: &Body, t: f64) -> Result<Posed, String> {
     let Shape::Convex(poly) = &body.shape else {
         // The loader refuses every effect on simple bodies in this version (NeedsConvex).
         return Err(format!(
@@ -432,7 +597,7 @@ fn caller_feature<K: Kernel>(poly: &ConvexPolygon, pose: Pose, f: Feature, x: DV
 }
 
 /// The per-frame effects of one job at one frame.
-fn eval_frame<K: Kernel>(
+pub(crate) fn eval_frame<K: Kernel>(
     job: &PairJob,
     t: f64,
     (ba, pa): (&Body, &Posed),
@@ -441,25 +606,30 @@ fn eval_frame<K: Kernel>(
     meter: &Meter,
     costs: &mut Costs,
 ) -> FrameResult {
-    let mut out = FrameResult {
-        t,
-        status: None,
-        distance: None,
-        squared_distance: None,
-        closest_points: None,
-        vertex_distance: None,
-        hausdorff: None,
-        cmmr: None,
-        error: None,
-    };
+    let mut out = FrameResult::empty(t, Status::Disjoint);
+    out.status = None;
     let (Shape::Convex(poly_a), Shape::Convex(poly_b)) = (&ba.shape, &bb.shape) else {
         out.status = Some(Status::Invalid);
         out.error = Some("a body is not convex".to_owned());
         return out;
     };
+    let mut known: Option<Separation> = None;
+    if let Some(r) = job.within {
+        // The threshold, decided exactly; the answer's separation serves the distance effects.
+        match meter.measure(&mut costs.distance, || {
+            distance_within::<K>(&pa.poly, &pb.poly, r)
+        }) {
+            Within::Beyond { .. } => {
+                out.status = Some(Status::Beyond);
+                return out;
+            }
+            Within::Inside(sep) => known = Some(sep),
+        }
+    }
     if job.needs_distance() {
-        let sep = match hint {
-            Some(h) => {
+        let sep = match (known, hint) {
+            (Some(sep), _) => sep,
+            (None, Some(h)) => {
                 if h.is_some() {
                     costs.distance_hinted += 1;
                 }
@@ -469,7 +639,7 @@ fn eval_frame<K: Kernel>(
                 *h = Some(next);
                 sep
             }
-            None => meter.measure(&mut costs.distance, || {
+            (None, None) => meter.measure(&mut costs.distance, || {
                 distance_with::<K>(&pa.poly, &pb.poly)
             }),
         };

@@ -233,6 +233,11 @@ pub struct QuerySpec {
     /// [`DEFAULT_MAX_STEPS`](crate::DEFAULT_MAX_STEPS)).
     #[serde(default)]
     pub max_steps: Option<u64>,
+    /// Per-frame effects only for pairs at distance at most `within` (decided exactly); farther pairs
+    /// are reported with status `beyond`, and the broad phase answers most of them from bounding
+    /// boxes without a narrow-phase query. Default: every pair (no threshold). Must be `≥ 0`.
+    #[serde(default)]
+    pub within: Option<f64>,
 }
 
 /// Which pairs a query covers.
