@@ -30,9 +30,11 @@
 
 mod brute;
 mod chain;
+mod clipped;
 mod construct;
 mod cve;
 mod cvv;
+mod envelope;
 mod error;
 mod frame;
 mod param;
@@ -45,6 +47,7 @@ mod wedge;
 pub use brute::{closest_visible_vertices_brute, separation_brute};
 pub use cve::{CveMatrix, EdgeEntry, compare_edge_entries};
 pub use cvv::{CvvMatrix, MatrixEntry, closest_visible_vertices, compare_entries};
+pub use envelope::{Envelope, perpendicular_envelope, perpendicular_envelope_brute};
 pub use error::{Chain, SeparationError};
 pub use result::{ChainSeparation, ClosestPair, Cvv, CvvStats, SeparationStats};
 pub use sigma::separation_of_chains;

@@ -8,10 +8,11 @@ use monotone_minima::row_minima_by;
 use polydist_polygon::Feature;
 use polydist_predicates::{Dist2, Kernel, Sign};
 
-use crate::chain::{Prepared, prepare_monotone, validate};
+use crate::chain::{EnvEdge, Prepared, validate};
 use crate::construct::{vertex_edge, vertex_vertex};
 use crate::cve::{CveMatrix, EdgeEntry, compare_edge_entries};
 use crate::cvv::CvvMatrix;
+use crate::envelope::prepare;
 use crate::error::{Chain, SeparationError};
 use crate::pieces::pieces;
 use crate::result::{ChainSeparation, ClosestPair, SeparationStats};
@@ -51,7 +52,7 @@ fn cve<K: Kernel>(m: &CveMatrix<K>, edges: &Prepared, p_side: bool) -> Option<Ca
     let mut best: Option<(usize, usize, EdgeEntry)> = None;
     for (i, &j) in minima.iter().enumerate() {
         let e = monotone_minima::Matrix::entry(m, i, j);
-        if !matches!(e, EdgeEntry::Dist { .. }) {
+        if !matches!(e, EdgeEntry::Dist { .. } | EdgeEntry::ClippedDist { .. }) {
             continue;
         }
         if best
@@ -121,8 +122,8 @@ pub fn separation_of_chains<K: Kernel>(
     b: DVec2,
 ) -> Result<ChainSeparation, SeparationError> {
     let frames = validate::<K>(p, q, a, b)?;
-    let pp = prepare_monotone::<K>(p, frames.p, Chain::P)?;
-    let qq = prepare_monotone::<K>(q, frames.q, Chain::Q)?;
+    let pp = prepare::<K>(p, frames.p, Chain::P)?;
+    let qq = prepare::<K>(q, frames.q, Chain::Q)?;
     let pa = apexes::<K>(&pp, frames.p);
     let qa = apexes::<K>(&qq, frames.q);
     let cvv = CvvMatrix::<K>::from_parts(frames, &pp, &qq, pa.clone(), qa.clone());
@@ -155,14 +156,9 @@ pub fn separation_of_chains<K: Kernel>(
     })
 }
 
-/// The real edges of a prepared chain, between consecutive heights.
-pub(crate) fn real_edges(pp: &Prepared) -> Vec<(DVec2, DVec2)> {
-    (0..pp.pts.len().saturating_sub(1))
-        .map(|k| {
-            let (a, b, _, _) = pp.edge(k);
-            (a, b)
-        })
-        .collect()
+/// The envelope edges of a prepared chain, between consecutive heights.
+pub(crate) fn real_edges(pp: &Prepared) -> Vec<EnvEdge> {
+    pp.edges.clone()
 }
 
 /// The realizing points and caller features of a candidate.
