@@ -414,6 +414,44 @@ fn nearly_touching_by_ulps() {
     }
 }
 
+/// Two combs facing tip to tip across the line through `P`'s tips (teeth perpendicular to the line,
+/// every tip at one depth, shadow points at vertices), `Q`'s tips 0 to 4 ulps of its coordinates
+/// beyond, teeth aligned or shifted by half a pitch.
+#[test]
+fn combs_tip_to_tip_few_ulps_apart() {
+    for teeth in [1usize, 2, 5, 12] {
+        for len in [1u32, 3] {
+            let p = comb(teeth, len, 1);
+            let top = f64::from(len);
+            // One ulp of the largest coordinate of Q: every coordinate stays exact.
+            let u = (2.0 * top + 2.0).max(2.0 * teeth as f64 + 2.0);
+            let ulp = 2f64.powi(u.log2().floor() as i32 - 52);
+            for k in 1..=4 {
+                for shift in [0.0, 0.5, 1.0] {
+                    let g = k as f64 * ulp;
+                    let mut pw = p.clone();
+                    pw.push(pw[0]);
+                    let mut qw: Vec<DVec2> = p
+                        .iter()
+                        .map(|v| DVec2::new(v.x + shift, (2.0 * top - v.y) + g))
+                        .collect();
+                    qw.push(qw[0]);
+                    let c = Case {
+                        p: pw,
+                        q: qw,
+                        a: DVec2::new(0.0, top),
+                        b: DVec2::new(1.0, top),
+                        name: format!("combs({teeth},{len}) {k} ulps shift {shift}"),
+                    };
+                    agree::<Robust>(&c, teeth <= 5);
+                    agree::<Exact>(&c, false);
+                    let _ = separation_of_chains::<Fast>(&c.p, &c.q, c.a, c.b);
+                }
+            }
+        }
+    }
+}
+
 #[test]
 fn larger_spirals_and_combs_against_the_brute_force() {
     let mut rng = SplitMix64::new(0x606);
