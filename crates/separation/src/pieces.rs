@@ -479,4 +479,106 @@ mod tests {
         }
         assert!(checked > 2000, "{checked}");
     }
+
+    /// The same checks on the envelopes of general simple chains (random 2-opt polygons, closed or
+    /// cut into open sub-chains): pieces lie in the envelope's parts of edges (which may end at
+    /// shadow points), with the brute-force tangents among the visible vertices.
+    #[test]
+    fn pieces_of_envelopes_of_general_chains() {
+        use crate::envelope::prepare;
+        use crate::error::Chain;
+        let mut rng = SplitMix64::new(32);
+        let mut checked = 0;
+        let mut shadows = 0;
+        for n in [3usize, 5, 8, 13, 21] {
+            for _ in 0..60 {
+                let poly: Vec<DVec2> = polydist_oracle::two_opt(&mut rng, n)
+                    .into_iter()
+                    .map(|v| DVec2::new(v.x + 1.0, v.y))
+                    .collect();
+                let chain: Vec<DVec2> = if rng.coin() {
+                    let mut c = poly.clone();
+                    c.push(poly[0]);
+                    c
+                } else {
+                    let (s0, len) = (rng.index(n), 1 + rng.index(n));
+                    (0..len).map(|t| poly[(s0 + t) % n]).collect()
+                };
+                let prep = prepare::<Exact>(&chain, P, Chain::P).unwrap();
+                let pts = &prep.pts;
+                let ps = pieces::<Exact>(&prep, P);
+                for w in ps.windows(2) {
+                    assert!(w[0].edge <= w[1].edge);
+                }
+                let edge = |k: usize| {
+                    let (a, b, _, _) = prep.edge(k);
+                    Edge { a, b }
+                };
+                for k in 0..prep.edges.len() {
+                    let r = &prep.edges[k];
+                    shadows += usize::from(matches!(r.lo, Param::Root(_)))
+                        + usize::from(matches!(r.hi, Param::Root(_)));
+                }
+                for pc in &ps {
+                    let e = edge(pc.edge);
+                    let r = &prep.edges[pc.edge];
+                    assert_ne!(e.cmp::<Exact>(&pc.bot, &pc.top), Ordering::Greater);
+                    assert_ne!(e.cmp::<Exact>(&r.lo, &pc.bot), Ordering::Greater);
+                    assert_ne!(e.cmp::<Exact>(&pc.top, &r.hi), Ordering::Greater);
+                    let (t0, t1) = (approx(&e, &pc.bot), approx(&e, &pc.top));
+                    if t1 - t0 < 1e-6 {
+                        continue;
+                    }
+                    for f in [0.25, 0.5, 0.75] {
+                        let t = ((t0 + f * (t1 - t0)) * 1024.0).round() / 1024.0;
+                        if t <= t0 + 1e-9 || t >= t1 - 1e-9 {
+                            continue;
+                        }
+                        let x = e.a + (e.b - e.a) * t;
+                        assert_eq!(
+                            pc.hi,
+                            brute(pts, pc.edge, x, true),
+                            "h of {pc:?} in {chain:?}"
+                        );
+                        assert_eq!(
+                            pc.lo,
+                            brute(pts, pc.edge, x, false),
+                            "l of {pc:?} in {chain:?}"
+                        );
+                        checked += 1;
+                    }
+                }
+                // Every sampled envelope point with α clearly ≥ 90° lies in some piece.
+                for k in 0..prep.edges.len() {
+                    let e = edge(k);
+                    let r = &prep.edges[k];
+                    let (t0, t1) = (approx(&e, &r.lo), approx(&e, &r.hi));
+                    for s in 1..32 {
+                        let t = ((t0 + (t1 - t0) * s as f64 / 32.0) * 1024.0).round() / 1024.0;
+                        if t <= t0 + 1e-9 || t >= t1 - 1e-9 {
+                            continue;
+                        }
+                        let x = e.a + (e.b - e.a) * t;
+                        let (h, l) = (brute(pts, k, x, true), brute(pts, k, x, false));
+                        let keep = match (h, l) {
+                            (Some(h), Some(l)) => (h - x).dot(l - x) < -1e-9,
+                            _ => true,
+                        };
+                        if keep {
+                            assert!(
+                                ps.iter().any(|pc| pc.edge == k
+                                    && approx(&e, &pc.bot) <= t + 1e-9
+                                    && t <= approx(&e, &pc.top) + 1e-9),
+                                "t={t} on edge {k} of {chain:?} is in no piece: {ps:?}"
+                            );
+                        }
+                    }
+                }
+            }
+        }
+        assert!(
+            checked > 500 && shadows > 50,
+            "{checked} samples, {shadows} shadow ends"
+        );
+    }
 }

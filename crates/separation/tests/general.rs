@@ -526,3 +526,93 @@ proptest! {
         agree::<Robust>(&c, size <= 8);
     }
 }
+
+/// The envelope against an independent exact definition (rationals, line `x = 0`, chains on
+/// `x ≥ 0`): at every vertex height the reported visible vertex (or none) is the unique nearest
+/// point, and at every height strictly between two consecutive visible vertices (all vertex heights
+/// there and the midpoints between them) the reported edge is the nearest.
+#[test]
+fn envelope_matches_exact_definition() {
+    use polydist_oracle::rat;
+    use polydist_predicates::BigRational;
+    let mut rng = SplitMix64::new(0x609);
+    let mut checked = 0;
+    for n in [3usize, 5, 8, 13, 20] {
+        for _ in 0..40 {
+            let poly: Vec<DVec2> = two_opt(&mut rng, n)
+                .into_iter()
+                .map(|v| DVec2::new(v.x + 1.0, v.y))
+                .collect();
+            let chain: Vec<DVec2> = if rng.coin() {
+                let mut c = poly.clone();
+                c.push(poly[0]);
+                c
+            } else {
+                let (s0, len) = (rng.index(n), 1 + rng.index(n));
+                (0..len).map(|t| poly[(s0 + t) % n]).collect()
+            };
+            let env = perpendicular_envelope::<Robust>(&chain, DVec2::ZERO, DVec2::Y).unwrap();
+            let r = |x: f64| rat(x).unwrap();
+            let segs: Vec<(DVec2, DVec2)> = chain.windows(2).map(|w| (w[0], w[1])).collect();
+            // Depths of the chain at height y: vertices there and edges crossing y.
+            let at = |y: &BigRational| -> Vec<(BigRational, Option<usize>)> {
+                let mut out = Vec::new();
+                for (i, v) in chain.iter().enumerate() {
+                    if r(v.y) == *y {
+                        out.push((r(v.x), Some(i)));
+                    }
+                }
+                for (a, b) in &segs {
+                    let (ya, yb) = (r(a.y), r(b.y));
+                    if (ya < *y && *y < yb) || (yb < *y && *y < ya) {
+                        let x = r(a.x) + (y - &ya) * (r(b.x) - r(a.x)) / (yb - ya);
+                        out.push((x, None));
+                    }
+                }
+                out
+            };
+            let nearest = |y: &BigRational| {
+                at(y)
+                    .into_iter()
+                    .min_by(|p, q| p.0.cmp(&q.0))
+                    .expect("a covered height")
+            };
+            // Visible vertices: exactly the vertex heights whose nearest point is a vertex.
+            let mut heights: Vec<BigRational> = chain.iter().map(|v| r(v.y)).collect();
+            heights.sort();
+            heights.dedup();
+            let vis: Vec<BigRational> = env.vertices.iter().map(|&i| r(chain[i].y)).collect();
+            for y in &heights {
+                let (x, who) = nearest(y);
+                match vis.iter().position(|h| h == y) {
+                    Some(k) => {
+                        assert_eq!(r(chain[env.vertices[k]].x), x, "{chain:?}");
+                        assert!(who.is_some(), "{chain:?}");
+                    }
+                    None => assert!(who.is_none(), "vertex at {y} missed in {chain:?}"),
+                }
+            }
+            // Between consecutive visible vertices, the reported edge is nearest.
+            for k in 0..env.edges.len() {
+                let (a, b) = segs[env.edges[k]];
+                let (lo, hi) = (&vis[k], &vis[k + 1]);
+                let mut ys: Vec<BigRational> = heights
+                    .iter()
+                    .filter(|h| lo < *h && *h < hi)
+                    .cloned()
+                    .collect();
+                ys.insert(0, lo.clone());
+                ys.push(hi.clone());
+                for w in ys.windows(2) {
+                    let y = (&w[0] + &w[1]) / BigRational::from_integer(2.into());
+                    let (x, _) = nearest(&y);
+                    let (ya, yb) = (r(a.y), r(b.y));
+                    let xe = r(a.x) + (&y - &ya) * (r(b.x) - r(a.x)) / (yb - ya);
+                    assert_eq!(x, xe, "edge {} at {y} in {chain:?}", env.edges[k]);
+                    checked += 1;
+                }
+            }
+        }
+    }
+    assert!(checked > 1000, "{checked}");
+}
