@@ -193,3 +193,61 @@ mod never_panics {
         }
     }
 }
+
+/// σ on general chains: closed chains, the closing edge's index, `NotSimple` for the violations the
+/// envelope meets, `NotMonotone` only from `closest_visible_vertices`.
+#[test]
+fn general_and_closed_chains() {
+    use polydist_separation::separation_of_chains;
+    let q = [v(-1.0, 1.0)];
+    // A closed square right of x = 0; the nearest feature is its closing edge (x = 1).
+    let square = [
+        v(1.0, 0.0),
+        v(3.0, 0.0),
+        v(3.0, 2.0),
+        v(1.0, 2.0),
+        v(1.0, 0.0),
+    ];
+    let s = separation_of_chains::<Robust>(&square, &q, A, B).unwrap();
+    assert_eq!(s.pair.feature_p, Feature::Edge(3));
+    assert_eq!(s.pair.squared_distance, 4.0);
+    // Repeats around the closing vertex keep the polygon's indices for vertices; the closing edge is
+    // the caller's segment into the repeat.
+    let square2 = [
+        v(1.0, 0.0),
+        v(3.0, 0.0),
+        v(3.0, 2.0),
+        v(1.0, 2.0),
+        v(1.0, 2.0),
+        v(1.0, 0.0),
+        v(1.0, 0.0),
+    ];
+    let s = separation_of_chains::<Robust>(&square2, &q, A, B).unwrap();
+    assert_eq!(s.pair.feature_p, Feature::Edge(4));
+    // The nearest point is the repeated first vertex: reported as vertex 0.
+    let s = separation_of_chains::<Robust>(&square, &[v(-1.0, -1.0)], A, B).unwrap();
+    assert_eq!(s.pair.feature_p, Feature::Vertex(0));
+    // A non-monotone open chain (a hook): accepted by σ, rejected by CVV.
+    let hook = [v(3.0, 1.0), v(4.0, -1.0), v(1.0, 0.0), v(1.0, 2.0)];
+    let s = separation_of_chains::<Robust>(&hook, &q, A, B).unwrap();
+    assert_eq!(s.pair.feature_p, Feature::Edge(2));
+    assert!(matches!(
+        run(&hook, &q, A, B),
+        Err(SeparationError::NotMonotone {
+            chain: Chain::P,
+            ..
+        })
+    ));
+    // Not simple: a closed chain of two vertices; a vertex on another edge; overlapping edges.
+    for (bad, index) in [
+        (vec![v(1.0, 0.0), v(2.0, 1.0), v(1.0, 0.0)], 2),
+        (vec![v(1.0, 0.0), v(1.0, 4.0), v(3.0, 2.0), v(1.0, 2.0)], 3),
+        (vec![v(1.0, 0.0), v(1.0, 4.0), v(1.0, 1.0)], 2),
+    ] {
+        let got = separation_of_chains::<Robust>(&bad, &q, A, B);
+        assert!(
+            matches!(got, Err(SeparationError::NotSimple { chain: Chain::P, index: i }) if i == index),
+            "{bad:?}: {got:?}"
+        );
+    }
+}
