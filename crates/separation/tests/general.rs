@@ -624,16 +624,15 @@ fn envelope_matches_exact_definition() {
     assert!(checked > 1000, "{checked}");
 }
 
-/// A CVE matrix that is **not** totally monotone although every entry follows the definitions (found
-/// by the proptest on closed polygons, seed in `general.proptest-regressions`): `Q` lies entirely
-/// below `P` along the line, `P`'s lowest row ends at a vertex on the line (its own tangent point),
-/// then the envelope jumps away from the line (a shadow point, or equally a perpendicular run in a
-/// monotone chain: the second case below, which the monotone-chain code of earlier branches handles
-/// identically) to an edge without pieces, so no row raises the `u^-` cap before the next row. The
-/// realizing segments of the two rows' candidate pairs do not cross, and Lemma 7's exchange argument
-/// fails. σ is still right here and in 150,000 proptest cases (checked against the exact oracle), but
+/// A CVE matrix that is **not** totally monotone (found by the proptest on closed polygons, seed in
+/// `general.proptest-regressions`). Cause: `Dist` entries hold the distance to the row's *whole* edge,
+/// and here the nearest point of that edge to the far, nearly coincident columns is its start, outside
+/// the piece the `α` clip left (`t ∈ [0.769, 1]`); the piece's own distances order the columns
+/// consistently with the row below. The second case is the same configuration as a monotone chain
+/// with a perpendicular run, which the monotone-chain code of earlier branches builds identically.
+/// σ is still right here and in 150,000 proptest cases (checked against the exact oracle), but
 /// SMAWK's minima are only guaranteed on totally monotone matrices: see the docs, "Not done". This
-/// test pins the current behaviour; when the construction is fixed it fails, and the docs must say so.
+/// test pins the current behaviour; when the entries are fixed it fails, and the docs must say so.
 #[test]
 fn known_total_monotonicity_violation() {
     let v = |x: f64, y: f64| DVec2::new(x, y);
