@@ -342,7 +342,7 @@ fn clean(chain: &[DVec2], which: Chain) -> Result<Clean, SeparationError> {
             });
         }
         closed = true;
-        closing = last - 1;
+        closing = last.saturating_sub(1);
     }
     let m = v.len();
     let mut edges: Vec<(usize, usize, usize)> = (1..m).map(|k| (k - 1, k, idx[k] - 1)).collect();
