@@ -14,6 +14,17 @@
 //! - `parry_build_query`: building both polylines (their BVHs) and the query, what a one-shot
 //!   query pays.
 //!
+//! Whole closed polygon boundaries (not monotone along the line; the envelope of Lemma 2 first),
+//! `N` vertices in all, `N` in 64 … 4,096:
+//!
+//! - `separation/closed_spirals`: a 4-turn spiral polygon and its mirror image across a line
+//!   tangent to its hull at the bottom;
+//! - `separation/closed_combs`: two combs (teeth of width 1, length 3, gaps 1) facing tip to tip
+//!   across the line through one comb's tips, half a unit apart, shifted by half a tooth.
+//!
+//! Series: `sigma_fast`, `sigma_robust`, `envelope_robust` (`perpendicular_envelope::<Robust>` of
+//! one polygon), `brute_robust`, `parry_build_query` (the boundaries as closed `Polyline`s).
+//!
 //! Before timing, parry's and the brute force's distances are checked against polydist's (relative
 //! 1e-9). Run: `cargo bench -p polydist-benches --bench separation`. Figures only.
 
@@ -25,9 +36,11 @@ use glam::DVec2;
 use parry2d_f64::math::{Pose, Vector};
 use parry2d_f64::query;
 use parry2d_f64::shape::Polyline;
-use polydist_oracle::SplitMix64;
+use polydist_oracle::{SplitMix64, comb, spiral};
 use polydist_predicates::{Exact, Fast, Kernel, Robust};
-use polydist_separation::{closest_visible_vertices, separation_brute, separation_of_chains};
+use polydist_separation::{
+    closest_visible_vertices, perpendicular_envelope, separation_brute, separation_of_chains,
+};
 
 /// Total vertices.
 const SIZES: [usize; 5] = [64, 512, 4096, 32_768, 131_072];
@@ -151,8 +164,111 @@ fn run(c: &mut Criterion, name: &str, make: fn(usize) -> Case) {
     group.finish();
 }
 
+/// Two closed boundaries (last vertex repeating the first) and the separating line.
+struct Closed {
+    p: Vec<DVec2>,
+    q: Vec<DVec2>,
+    a: DVec2,
+    b: DVec2,
+}
+
+/// `poly` closed, mirrored through `y = y0` and shifted by `dx` when `mirror` is given.
+fn close(poly: &[DVec2], mirror: Option<(f64, f64)>) -> Vec<DVec2> {
+    let mut v: Vec<DVec2> = poly
+        .iter()
+        .map(|p| match mirror {
+            Some((y0, dx)) => DVec2::new(p.x + dx, 2.0 * y0 - p.y),
+            None => *p,
+        })
+        .collect();
+    v.push(v[0]);
+    v
+}
+
+fn closed_spirals(n: usize) -> Closed {
+    // 2(per · turns + 1) vertices per polygon.
+    let per = (n / 16).max(3) as u32;
+    let s = spiral(per, 4);
+    let ymin = s.iter().map(|p| p.y).fold(f64::INFINITY, f64::min);
+    Closed {
+        p: close(&s, None),
+        q: close(&s, Some((ymin - 0.5, 0.25))),
+        a: DVec2::new(0.0, ymin),
+        b: DVec2::new(1.0, ymin),
+    }
+}
+
+fn closed_combs(n: usize) -> Closed {
+    // 4 vertices per tooth.
+    let c = comb((n / 8).max(1), 3, 1);
+    Closed {
+        p: close(&c, None),
+        q: close(&c, Some((3.25, 0.5))),
+        a: DVec2::new(0.0, 3.0),
+        b: DVec2::new(1.0, 3.0),
+    }
+}
+
+fn closed_sigma<K: Kernel>(c: &Closed) -> f64 {
+    separation_of_chains::<K>(&c.p, &c.q, c.a, c.b)
+        .expect("valid input")
+        .pair
+        .distance
+}
+
+fn run_closed(c: &mut Criterion, name: &str, make: fn(usize) -> Closed) {
+    let mut group = c.benchmark_group(name);
+    configure(&mut group);
+    for n in [64usize, 512, 4096] {
+        let case = make(n);
+        let total = case.p.len() + case.q.len();
+        let d = closed_sigma::<Robust>(&case);
+        let rel = |x: f64| ((x - d) / d).abs();
+        let (pp, pq) = (polyline(&case.p), polyline(&case.q));
+        assert!(rel(parry(&pp, &pq)) < 1e-9, "{name} n={n}: parry disagrees");
+        let b = separation_brute::<Robust>(&case.p, &case.q)
+            .expect("valid")
+            .distance;
+        assert!(rel(b) < 1e-12, "{name} n={n}: brute disagrees");
+        group.bench_with_input(BenchmarkId::new("sigma_fast", total), &case, |b, c| {
+            b.iter(|| closed_sigma::<Fast>(black_box(c)))
+        });
+        group.bench_with_input(BenchmarkId::new("sigma_robust", total), &case, |b, c| {
+            b.iter(|| closed_sigma::<Robust>(black_box(c)))
+        });
+        group.bench_with_input(BenchmarkId::new("envelope_robust", total), &case, |b, c| {
+            b.iter(|| {
+                perpendicular_envelope::<Robust>(black_box(&c.p), c.a, c.b)
+                    .expect("valid")
+                    .vertices
+                    .len()
+            })
+        });
+        group.bench_with_input(BenchmarkId::new("brute_robust", total), &case, |b, c| {
+            b.iter(|| {
+                separation_brute::<Robust>(black_box(&c.p), &c.q)
+                    .expect("valid")
+                    .distance
+            })
+        });
+        group.bench_with_input(
+            BenchmarkId::new("parry_build_query", total),
+            &case,
+            |b, c| {
+                b.iter(|| {
+                    let (p, q) = (polyline(black_box(&c.p)), polyline(&c.q));
+                    parry(&p, &q)
+                })
+            },
+        );
+    }
+    group.finish();
+}
+
 fn benches() {
     let mut c = Criterion::default().configure_from_args();
+    run_closed(&mut c, "separation/closed_spirals", closed_spirals);
+    run_closed(&mut c, "separation/closed_combs", closed_combs);
     run(&mut c, "separation/random", random);
     run(&mut c, "separation/combs", combs);
     c.final_summary();

@@ -1,5 +1,7 @@
 //! Misuse is a typed error, never a panic or a silent answer; caller indices survive reversal.
 
+mod common;
+
 use glam::DVec2;
 use polydist_polygon::Feature;
 use polydist_predicates::{Fast, Robust};
@@ -176,17 +178,76 @@ mod never_panics {
             let _ = separation_brute::<Robust>(&p, &q);
         }
 
-        /// Separated lattice chains that may be non-monotone: an answer or `NotMonotone`, never a panic;
-        /// when an answer, it equals the brute force.
+        /// Separated lattice chains that may be non-monotone or not simple: an answer or an error,
+        /// never a panic; for simple chains, an answer equal to the brute force.
         #[test]
         fn lattice_inputs(p in prop::collection::vec((1i32..6, -6i32..6), 1..7),
                           q in prop::collection::vec((-6i32..0, -6i32..6), 1..7)) {
             let p: Vec<DVec2> = p.into_iter().map(|(x, y)| DVec2::new(x.into(), y.into())).collect();
             let q: Vec<DVec2> = q.into_iter().map(|(x, y)| DVec2::new(x.into(), y.into())).collect();
-            if let Ok(s) = separation_of_chains::<Robust>(&p, &q, DVec2::ZERO, DVec2::Y) {
+            let simple = crate::common::simple_chain(&p) && crate::common::simple_chain(&q);
+            if let (true, Ok(s)) = (simple, separation_of_chains::<Robust>(&p, &q, DVec2::ZERO, DVec2::Y)) {
                 let b = separation_brute::<Robust>(&p, &q).unwrap();
                 prop_assert_eq!(s.pair.squared_distance, b.squared_distance);
             }
         }
+    }
+}
+
+/// σ on general chains: closed chains, the closing edge's index, `NotSimple` for the violations the
+/// envelope meets, `NotMonotone` only from `closest_visible_vertices`.
+#[test]
+fn general_and_closed_chains() {
+    use polydist_separation::separation_of_chains;
+    let q = [v(-1.0, 1.0)];
+    // A closed square right of x = 0; the nearest feature is its closing edge (x = 1).
+    let square = [
+        v(1.0, 0.0),
+        v(3.0, 0.0),
+        v(3.0, 2.0),
+        v(1.0, 2.0),
+        v(1.0, 0.0),
+    ];
+    let s = separation_of_chains::<Robust>(&square, &q, A, B).unwrap();
+    assert_eq!(s.pair.feature_p, Feature::Edge(3));
+    assert_eq!(s.pair.squared_distance, 4.0);
+    // Repeats around the closing vertex keep the polygon's indices for vertices; the closing edge is
+    // the caller's segment into the repeat.
+    let square2 = [
+        v(1.0, 0.0),
+        v(3.0, 0.0),
+        v(3.0, 2.0),
+        v(1.0, 2.0),
+        v(1.0, 2.0),
+        v(1.0, 0.0),
+        v(1.0, 0.0),
+    ];
+    let s = separation_of_chains::<Robust>(&square2, &q, A, B).unwrap();
+    assert_eq!(s.pair.feature_p, Feature::Edge(4));
+    // The nearest point is the repeated first vertex: reported as vertex 0.
+    let s = separation_of_chains::<Robust>(&square, &[v(-1.0, -1.0)], A, B).unwrap();
+    assert_eq!(s.pair.feature_p, Feature::Vertex(0));
+    // A non-monotone open chain (a hook): accepted by σ, rejected by CVV.
+    let hook = [v(3.0, 1.0), v(4.0, -1.0), v(1.0, 0.0), v(1.0, 2.0)];
+    let s = separation_of_chains::<Robust>(&hook, &q, A, B).unwrap();
+    assert_eq!(s.pair.feature_p, Feature::Edge(2));
+    assert!(matches!(
+        run(&hook, &q, A, B),
+        Err(SeparationError::NotMonotone {
+            chain: Chain::P,
+            ..
+        })
+    ));
+    // Not simple: a closed chain of two vertices; a vertex on another edge; overlapping edges.
+    for (bad, index) in [
+        (vec![v(1.0, 0.0), v(2.0, 1.0), v(1.0, 0.0)], 2),
+        (vec![v(1.0, 0.0), v(1.0, 4.0), v(3.0, 2.0), v(1.0, 2.0)], 3),
+        (vec![v(1.0, 0.0), v(1.0, 4.0), v(1.0, 1.0)], 2),
+    ] {
+        let got = separation_of_chains::<Robust>(&bad, &q, A, B);
+        assert!(
+            matches!(got, Err(SeparationError::NotSimple { chain: Chain::P, index: i }) if i == index),
+            "{bad:?}: {got:?}"
+        );
     }
 }
