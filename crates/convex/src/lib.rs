@@ -54,6 +54,7 @@
 
 pub use polydist_polygon as polygon;
 
+mod bracket;
 mod brute;
 mod construct;
 mod contact;

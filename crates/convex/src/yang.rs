@@ -26,9 +26,10 @@ use glam::DVec2;
 use polydist_polygon::ConvexPolygon;
 use polydist_polygon::predicates::{Kernel, Robust, Sign};
 
+use crate::bracket::{Bracket, bracket};
 use crate::brute::brute_pair;
 use crate::contact::contact_with;
-use crate::extreme::{Nearest, extreme, extreme_left_of, extreme_right_of, nearest_feature};
+use crate::extreme::{Nearest, extreme_left_of, extreme_right_of, nearest_feature};
 use crate::hint::Solved;
 use crate::pair::{Pair, at, canonical, certify, finish, nearer, prev};
 use crate::result::{Separation, bump};
@@ -45,8 +46,16 @@ use crate::schwartz::closest_candidate;
 /// predicate counts was 64.
 pub const SCAN_BELOW: usize = 9;
 
-/// How many reseeded searches follow a failed certificate before the exact contact test.
+/// How many reseeded searches follow a failed certificate under an inexact kernel (under an exact one
+/// the search is proved, so a failure means the polygons meet).
 pub(crate) const RESEEDS: usize = 2;
+
+/// The search again (two polygons with area), seeded by the vertices of `pair`: `ν₀ = q_j − p_i`
+/// (any `p ∈ P`, `q ∈ Q` is a valid seed). Returns the raw candidate.
+pub(crate) fn reseed<K: Kernel>(p: &[DVec2], q: &[DVec2], pair: Pair) -> Pair {
+    let (Pair::Vv(i, j) | Pair::Ve(i, j) | Pair::Ev(i, j)) = pair;
+    search::<K>(p, q, bracket::<K>(p, q, at(p, i), at(q, j))).0
+}
 
 /// `⌈log₂ x⌉` for `x ≥ 1`.
 fn ceil_log2(x: usize) -> u32 {
@@ -182,65 +191,15 @@ fn table1<K: Kernel>(p: &[DVec2], q: &[DVec2], a: usize, b: usize) -> Cell {
     }
 }
 
-/// A direction `l` (the "up" direction of the median line), given by input points so that every
-/// comparison along it is an exact degree-2 sign.
-#[derive(Clone, Copy, Debug)]
-pub(crate) enum Up {
-    /// `l = rot90(t − o)`: the left normal of the seed vector `t − o` (from `P` towards `Q`).
-    LeftOf(DVec2, DVec2),
-    /// `l = t − o`.
-    Along(DVec2, DVec2),
-}
-
-impl Up {
-    /// `sign((x − y)·l)`.
-    fn cmp<K: Kernel>(self, x: DVec2, y: DVec2) -> Sign {
-        match self {
-            Up::LeftOf(o, t) => K::cross_sign(o, t, y, x),
-            Up::Along(o, t) => K::dot_sign(y, x, o, t),
-        }
-    }
-
-    /// The direction `l_w = rot90(w)` of the canonical pair's vector `w = q* − p*`, from input points.
-    pub(crate) fn of_pair<K: Kernel>(p: &[DVec2], q: &[DVec2], pair: Pair) -> Up {
-        match pair {
-            Pair::Vv(i, j) => Up::LeftOf(at(p, i), at(q, j)),
-            Pair::Ve(i, j) => {
-                // w ∝ rot90(b − a) when p_i is right of Q's edge a → b, so l_w ∝ a − b.
-                let (a, b) = (at(q, j), at(q, j + 1));
-                if K::orient(a, b, at(p, i)).sign() == Sign::Negative {
-                    Up::Along(b, a)
-                } else {
-                    Up::Along(a, b)
-                }
-            }
-            Pair::Ev(i, j) => {
-                // w ∝ −rot90(b − a) when q_j is right of P's edge a → b, so l_w ∝ b − a.
-                let (a, b) = (at(p, i), at(p, i + 1));
-                if K::orient(a, b, at(q, j)).sign() == Sign::Negative {
-                    Up::Along(a, b)
-                } else {
-                    Up::Along(b, a)
-                }
-            }
-        }
-    }
-}
-
-/// The main search (notes §3) on the chains facing the direction `rot−90(l)` (notes §4).
-/// Returns a candidate pair (not yet certified) and the iterations used.
-pub(crate) fn search<K: Kernel>(p: &[DVec2], q: &[DVec2], up: Up) -> (Pair, u32) {
+/// The main search (notes §3) on the proved initial ranges `ranges` ([`bracket`], Lemma B2).
+/// Returns a candidate pair (certified by the caller) and the iterations used.
+pub(crate) fn search<K: Kernel>(p: &[DVec2], q: &[DVec2], ranges: Bracket) -> (Pair, u32) {
     let (n, m) = (p.len(), q.len());
-    // Initial ranges: P' = CCW chain from the lowest to the highest vertex along l; Q' = CCW chain of Q
-    // from its highest to its lowest. With l = rot90(t − o) for any o ∈ P, t ∈ Q of disjoint polygons,
-    // (t − o)·u > 0, so both chains contain the support faces; they lie inside P_1, Q_1 only when l is
-    // close enough to l_u (the gap of the paper's steps 3–5, see the docs): the certificate decides.
-    let lp0 = extreme(p, |x, y| up.cmp::<K>(y, x));
-    let hp0 = extreme(p, |x, y| up.cmp::<K>(x, y));
-    let lq0 = extreme(q, |x, y| up.cmp::<K>(x, y));
-    let hq0 = extreme(q, |x, y| up.cmp::<K>(y, x));
-    let (mut lp, mut hp) = (lp0, if hp0 >= lp0 { hp0 } else { hp0 + n });
-    let (mut lq, mut hq) = (lq0, if hq0 >= lq0 { hq0 } else { hq0 + m });
+    // Ranges (Lemma B2): every edge's normal is strictly within 90° of u (of −u for Q), so every
+    // strictly interior vertex is interior to the facing chains P_1, Q_1, and the ranges hold the
+    // support faces F_P(u), F_Q(−u): Table 1 and Lemma A apply at every midpoint.
+    let (mut lp, mut hp) = ranges.p;
+    let (mut lq, mut hq) = ranges.q;
     let bound = ceil_log2(n) + ceil_log2(m) + 4;
     let mut iterations = 0;
     // Each pass either returns or replaces a range of length L ≥ 2 by one of length ≤ ⌈L/2⌉ (the
@@ -341,14 +300,8 @@ pub(crate) fn candidate<K: Kernel>(pp: &ConvexPolygon, qq: &ConvexPolygon) -> Op
         (2, 3..) => segment_polygon::<K>(p, q)?,
         (3.., 2) => segment_polygon::<K>(q, p)?.swapped(),
         (3.., 3..) => {
-            // Seeds (Yang's steps 1–2): q_1 a vertex of Q's nearest feature to p_0, then P's nearest
-            // feature to q_1; the search looks along the direction of that pair.
-            let j = match nearest_feature::<K>(q, p[0])? {
-                Nearest::Vertex(j) | Nearest::Edge(j) => j,
-            };
-            let seed = point_pair(j, nearest_feature::<K>(p, q[j])?).swapped();
-            let (pair, iterations) =
-                search::<K>(p, q, Up::of_pair::<K>(p, q, canonical::<K>(p, q, seed)));
+            // The proved bracket (Lemma B2), seeded by ν₀ = q_0 − p_0: ⟨q − p, u⟩ > 0 for disjoint input.
+            let (pair, iterations) = search::<K>(p, q, bracket::<K>(p, q, p[0], q[0]));
             bump(|s| {
                 s.last_iterations = iterations;
                 s.last_bound = ceil_log2(n) + ceil_log2(m) + 4;
@@ -426,12 +379,13 @@ pub(crate) fn solve_yang<K: Kernel>(pp: &ConvexPolygon, qq: &ConvexPolygon) -> S
         first
     };
     bump(|s| s.certificate_failures += 1);
-    if let (Some(mut pair), true) = (first, p.len() >= 3 && q.len() >= 3) {
-        // Reseed from the candidate's own direction, which is close to u when the candidate is close
-        // to the answer: the ranges then fit inside the facing chains.
+    // Under an exact kernel the search is proved (docs, "The proved bracket"): a failed certificate
+    // means the polygons meet. Under an inexact one, search again seeded from the candidate's own
+    // vertices (any p ∈ P, q ∈ Q give a valid ν₀), which may avoid the inconsistent signs.
+    if let (Some(mut pair), true, true) = (first, !K::EXACT_DECISIONS, p.len() >= 3 && q.len() >= 3)
+    {
         for _ in 0..RESEEDS {
-            let (again, _) = search::<K>(p, q, Up::of_pair::<K>(p, q, pair));
-            let again = canonical::<K>(p, q, again);
+            let again = canonical::<K>(p, q, reseed::<K>(p, q, pair));
             if certify::<K>(p, q, again) {
                 bump(|s| s.repaired_by_retry += 1);
                 return Solved::Disjoint(finish::<K>(pp, qq, again), again);
