@@ -151,3 +151,152 @@ pub(crate) fn bracket<K: Kernel>(p: &[DVec2], q: &[DVec2], o: DVec2, t: DVec2) -
         q: unwrap(q_lo, q_hi, q.len()),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use polydist_oracle::{
+        Contact, Feature, Relation, SplitMix64, contact_status_convex, convex_distance,
+        convex_pair, random_convex_lattice, rat,
+    };
+    use polydist_polygon::predicates::{BigRational, Exact};
+
+    type R2 = (BigRational, BigRational);
+
+    fn r2(v: DVec2) -> R2 {
+        (rat(v.x).expect("finite"), rat(v.y).expect("finite"))
+    }
+
+    /// The exact min vector `w = q* − p*` (a positive multiple of `u`) from a vertex–vertex or
+    /// vertex–edge optimal pair of the oracle.
+    fn min_vector(p: &[DVec2], q: &[DVec2]) -> R2 {
+        let exact = convex_distance(p, q);
+        let foot = |x: DVec2, a: DVec2, b: DVec2| {
+            let ((xx, xy), (ax, ay), (bx, by)) = (r2(x), r2(a), r2(b));
+            let (ex, ey) = (&bx - &ax, &by - &ay);
+            let t = ((&xx - &ax) * &ex + (&xy - &ay) * &ey) / (&ex * &ex + &ey * &ey);
+            (&ax + &t * &ex, &ay + &t * &ey)
+        };
+        let (ps, qs) = exact
+            .pairs
+            .iter()
+            .find_map(|&(f, g)| match (f, g) {
+                (Feature::Vertex(i), Feature::Vertex(j)) => Some((r2(p[i]), r2(q[j]))),
+                (Feature::Vertex(i), Feature::Edge(j)) => {
+                    Some((r2(p[i]), foot(p[i], q[j], q[(j + 1) % q.len()])))
+                }
+                (Feature::Edge(i), Feature::Vertex(j)) => {
+                    Some((foot(q[j], p[i], p[(i + 1) % p.len()]), r2(q[j])))
+                }
+                (Feature::Edge(..), Feature::Edge(..)) => None,
+            })
+            .expect("the oracle lists vertex pairs");
+        (&qs.0 - &ps.0, &qs.1 - &ps.1)
+    }
+
+    /// `⟨w, v⟩` exactly.
+    fn dot(w: &R2, v: DVec2) -> BigRational {
+        let (x, y) = r2(v);
+        &w.0 * &x + &w.1 * &y
+    }
+
+    /// Checks Lemma B2's conclusions (R1), (R2) exactly for the bracket of `(p, q)` seeded at `(o, t)`.
+    /// Returns the lengths of the two ranges.
+    fn check(p: &[DVec2], q: &[DVec2], o: DVec2, t: DVec2) -> (usize, usize) {
+        let w = min_vector(p, q);
+        let b = bracket::<Exact>(p, q, o, t);
+        let ctx = || format!("p = {p:?}\nq = {q:?}\nseed {o} → {t}\n{b:?}");
+        let (n, m) = (p.len(), q.len());
+        let zero = BigRational::from_integer(0.into());
+        // (R2): every edge d of P's range has its outward normal strictly within 90° of u, i.e. rises
+        // strictly along l_u = rot90(w): ⟨d, rot90(w)⟩ = w × d > 0; every edge of Q's range: w × d < 0.
+        let cross = |a: DVec2, c: DVec2| {
+            let (ax, ay) = r2(a);
+            let (cx, cy) = r2(c);
+            &w.0 * &(&cy - &ay) - &w.1 * &(&cx - &ax)
+        };
+        assert!(b.p.0 <= b.p.1 && b.p.1 < b.p.0 + n, "{}", ctx());
+        assert!(b.q.0 <= b.q.1 && b.q.1 < b.q.0 + m, "{}", ctx());
+        for k in b.p.0..b.p.1 {
+            assert!(
+                cross(at(p, k), at(p, k + 1)) > zero,
+                "P edge {k}: {}",
+                ctx()
+            );
+        }
+        for k in b.q.0..b.q.1 {
+            assert!(
+                cross(at(q, k), at(q, k + 1)) < zero,
+                "Q edge {k}: {}",
+                ctx()
+            );
+        }
+        // (R1): every vertex of the faces F_P(u) (max ⟨·, w⟩) and F_Q(−u) (min) is in its range.
+        let in_range =
+            |(lo, hi): (usize, usize), len: usize, i: usize| (lo..=hi).any(|k| k % len == i);
+        let best_p = p.iter().map(|&v| dot(&w, v)).max().expect("vertices");
+        let best_q = q.iter().map(|&v| dot(&w, v)).min().expect("vertices");
+        for i in (0..n).filter(|&i| dot(&w, p[i]) == best_p) {
+            assert!(in_range(b.p, n, i), "F_P(u) vertex {i}: {}", ctx());
+        }
+        for j in (0..m).filter(|&j| dot(&w, q[j]) == best_q) {
+            assert!(in_range(b.q, m, j), "F_Q(−u) vertex {j}: {}", ctx());
+        }
+        (b.p.1 - b.p.0, b.q.1 - b.q.0)
+    }
+
+    /// Lemma B2 checked exactly: small lattice polygons (parallel edges, edges ⟂ u, seeds along edges
+    /// and ⟂ edges are common), every seed pair of vertices, both argument orders; and generator
+    /// pairs of every disjoint relation with a few seeds each.
+    #[test]
+    fn lemma_b2_holds_exactly() {
+        let mut rng = SplitMix64::new(2006);
+        let (mut pairs, mut seeds, mut single) = (0, 0, 0);
+        for round in 0..700 {
+            let p = random_convex_lattice(&mut rng, 3 + round % 6, 8);
+            let shift = DVec2::new(rng.range_i64(-20, 20) as f64, rng.range_i64(-20, 20) as f64);
+            let q: Vec<DVec2> = random_convex_lattice(&mut rng, 3 + (round / 6) % 6, 8)
+                .iter()
+                .map(|&v| v + shift)
+                .collect();
+            if contact_status_convex(&p, &q) != Contact::Disjoint {
+                continue;
+            }
+            pairs += 1;
+            for &o in &p {
+                for &t in &q {
+                    let (lp, lq) = check(&p, &q, o, t);
+                    check(&q, &p, t, o);
+                    seeds += 1;
+                    single += usize::from(lp == 0 || lq == 0);
+                }
+            }
+        }
+        for rel in [
+            Relation::Far,
+            Relation::NearlyTouching { ulps: 1 },
+            Relation::ParallelFacing,
+            Relation::HugeOffset,
+            Relation::Sliver,
+        ] {
+            for k in 0..40 {
+                let pair = convex_pair(&mut rng, 3 + k % 17, 3 + k % 11, rel);
+                if pair.contact != Contact::Disjoint {
+                    continue;
+                }
+                pairs += 1;
+                for s in 0..3 {
+                    let (o, t) = (pair.p[s % pair.p.len()], pair.q[(5 * s) % pair.q.len()]);
+                    check(&pair.p, &pair.q, o, t);
+                    check(&pair.q, &pair.p, t, o);
+                    seeds += 1;
+                }
+            }
+        }
+        println!("{pairs} disjoint pairs, {seeds} seeds, {single} with a one-vertex range");
+        assert!(
+            pairs > 300 && seeds > 5000 && single > 0,
+            "{pairs} {seeds} {single}"
+        );
+    }
+}

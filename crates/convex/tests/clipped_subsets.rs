@@ -7,27 +7,11 @@
 
 mod common;
 
-use common::counted;
-use glam::DVec2;
+use common::{clipped_pair, counted};
 use polydist_convex::polygon::ConvexPolygon;
-use polydist_convex::polygon::predicates::{Counted, Exact, Kernel, Robust, Sign};
+use polydist_convex::polygon::predicates::{Counted, Exact, Robust};
 use polydist_convex::{distance_brute, distance_yang_with, reset_search_stats, search_stats};
-use polydist_oracle::{Relation, SplitMix64, convex_pair, random_convex};
-
-/// The strictly separated subsets of `p` (left of `a → b`) and `q` (right of it), when both are
-/// polygons with area.
-fn clipped(p: &[DVec2], q: &[DVec2], a: DVec2, b: DVec2) -> Option<(ConvexPolygon, ConvexPolygon)> {
-    let side = |s: Sign| move |x: &&DVec2| Robust::orient(a, b, **x).sign() == s;
-    let c: Vec<DVec2> = p.iter().filter(side(Sign::Positive)).copied().collect();
-    let d: Vec<DVec2> = q.iter().filter(side(Sign::Negative)).copied().collect();
-    if c.len() < 3 || d.len() < 3 {
-        return None;
-    }
-    Some((
-        ConvexPolygon::try_new(&c).ok()?,
-        ConvexPolygon::try_new(&d).ok()?,
-    ))
-}
+use polydist_oracle::SplitMix64;
 
 #[test]
 fn the_proved_bracket_never_misses() {
@@ -37,18 +21,13 @@ fn the_proved_bracket_never_misses() {
     let mut exact_checked = 0;
     for round in 0..1200 {
         let n = 8 + rng.index(120);
-        let (p, q) = if round % 2 == 0 {
-            let pair = convex_pair(&mut rng, n, n, Relation::Overlapping);
-            (pair.p, pair.q)
-        } else {
-            let p = random_convex(&mut rng, n, DVec2::ZERO, 1.0);
-            let q = random_convex(&mut rng, n, DVec2::new(0.6, 0.1), 1.0);
-            (p, q)
-        };
-        let (a, b) = (p[rng.index(p.len())], q[rng.index(q.len())]);
-        let Some((pc, pd)) = (a != b).then(|| clipped(&p, &q, a, b)).flatten() else {
+        let Some((c, d)) = clipped_pair(&mut rng, n, round) else {
             continue;
         };
+        let (pc, pd) = (
+            ConvexPolygon::try_new(&c).expect("valid"),
+            ConvexPolygon::try_new(&d).expect("valid"),
+        );
         tried += 1;
         let (s, count) = counted(|| distance_yang_with::<Counted<Robust>>(&pc, &pd));
         let want = distance_brute::<Robust>(&pc, &pd);
