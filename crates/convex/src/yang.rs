@@ -9,16 +9,20 @@
 //!   Inner column omits `Q_m`), with strictly interior midpoints.
 //! - Once a range is a single vertex or edge, a one-sided step (Lemma A of the design notes) shrinks the
 //!   other range; the loop is bounded by `⌈log₂n⌉ + ⌈log₂m⌉ + 4` whatever the predicates answer.
-//! - The paper's initial-range steps 3–5 are unproved; we search the chains facing the direction of a
-//!   seed pair (its steps 1–2), which always contain the support faces, certify the answer with
-//!   Theorem 1 in `O(1)` exact tests, reseed from the candidate's own direction when the certificate
-//!   fails, then run the `O(log)` exact contact test ([`contact_with`](crate::contact_with)); a
-//!   disjoint pair on which both searches failed goes to Schwartz's `O(log² N)` search (no initial
-//!   ranges needed), and only an answer that fails the certificate there too (an inexact kernel) to the
-//!   brute force.
+//! - The paper's initial-range steps 3–5 are unproved; we replace them by a proved bracket
+//!   (`bracket.rs`): one exact test tells on which side of `ν₀ = q_0 − p_0` the optimal direction `u`
+//!   lies, and the ranges are the chains whose edge normals lie in that quarter-turn. They hold the
+//!   support faces and lie inside the facing chains, the precondition of the proved main loop, so under
+//!   an exact kernel the answer is always optimal.
+//! - The Theorem-1 certificate (`O(1)` exact tests) stays as a safety net: under Robust and Exact it
+//!   fails only when the polygons meet; then the `O(log)` exact contact test
+//!   ([`contact_with`](crate::contact_with)) classifies them. Under an inexact kernel a failed
+//!   certificate is followed by reseeded searches; a disjoint pair on which they all failed goes to
+//!   Schwartz's `O(log² N)` search, and only an answer that fails the certificate there too to the
+//!   brute force (these fallbacks never run under Robust or Exact on disjoint input: tested).
 //!
-//! Running time: `O(log n + log m)` exact predicates when a certificate holds (every disjoint input
-//! tested so far) and for meeting polygons (the contact test); `O(log² (n + m))` in the worst case.
+//! Running time: `O(log n + log m)` exact predicates on every input (proved: docs, "The proved
+//! bracket"), disjoint or meeting.
 
 use core::any::TypeId;
 
@@ -316,18 +320,20 @@ pub(crate) fn candidate<K: Kernel>(pp: &ConvexPolygon, qq: &ConvexPolygon) -> Op
 /// The distance between two convex polygons by the `O(log m + log n)` search at every size (no scan
 /// for small inputs): [`distance_with`] without its crossover, for tests and benchmarks.
 ///
-/// The search (Yang et al. 2006 rebuilt with exact predicates, see the crate docs) returns a candidate
-/// pair; Theorem 1 certifies it with `O(1)` exact tests. A failed certificate (always the case when the
-/// polygons meet) triggers up to two reseeded searches from the candidate, then the exact `O(log)`
-/// contact test [`contact_with`](crate::contact_with); if that says disjoint (the search failed),
-/// Schwartz's search answers ([`distance_schwartz_with`](crate::distance_schwartz_with), certified the
-/// same way), and the brute force only if that fails too (an inexact kernel).
-/// [`search_stats`](crate::search_stats) counts each event.
+/// The search (Yang et al. 2006 rebuilt with exact predicates, on a proved initial bracket: see the
+/// crate docs) returns a candidate pair; Theorem 1 certifies it with `O(1)` exact tests. Under an exact
+/// kernel the candidate of disjoint polygons is proved optimal, so the certificate fails only when the
+/// polygons meet, and the exact `O(log)` contact test [`contact_with`](crate::contact_with) then
+/// classifies them. Under an inexact kernel a failed certificate triggers up to two reseeded searches,
+/// then the contact test; if that says disjoint, Schwartz's search answers
+/// ([`distance_schwartz_with`](crate::distance_schwartz_with), certified the same way), and the brute
+/// force only if that fails too. [`search_stats`](crate::search_stats) counts each event.
 ///
 /// # Complexity
-/// `O(log n + log m)` exact predicates when the certificate holds (every disjoint input we have
-/// tested: see the docs) and for touching or overlapping polygons; `O(log² (n + m))` when Schwartz's
-/// search is needed; `O(nm)` only when an inexact kernel defeats both certified searches.
+/// `O(log n + log m)` exact predicates under Robust and Exact, for every input (disjoint: four extreme
+/// searches, five signs, at most `⌈log₂n⌉ + ⌈log₂m⌉ + 4` passes of the main loop and the certificate;
+/// meeting: the same plus the contact test). Under an inexact kernel `O(log² (n + m))` when Schwartz's
+/// search is needed and `O(nm)` only when it defeats both certified searches.
 ///
 /// # Examples
 /// ```
