@@ -8,9 +8,13 @@
 //!   for tiny inputs and otherwise by [`distance_yang_with`]: Yang, Qi, Meng, Li, Wang (2006)'s binary
 //!   search on outer Voronoi regions, rebuilt for exact predicates (Table 1 in its weak reading, a
 //!   one-sided step once a range is a single feature, a loop bound that holds whatever the predicates
-//!   say) and certified by Theorem 1 (Lin–Canny) in `O(1)` exact tests.
+//!   say) on a proved initial bracket (the chains whose normals lie in a quarter-turn around the optimal
+//!   direction, found by one exact side test), so `O(log n + log m)` on every input; the answer is
+//!   certified by Theorem 1 (Lin–Canny) in `O(1)` exact tests, a safety net that never fails under the
+//!   exact kernels on disjoint input.
 //! - [`distance_schwartz_with`]: Schwartz (1981)'s `O(log² N)` search on the implicit Minkowski
-//!   difference, a second algorithm with the same result type (and the Yang path's last resort).
+//!   difference, a second algorithm with the same result type (and the Yang path's last resort under
+//!   an inexact kernel).
 //! - [`contact_with`] / [`intersects`]: the intersection test in `O(log n + log m)` (disjoint, touching
 //!   with an exact contact point, overlapping), by prune-and-search on the Minkowski chains.
 //! - [`distance_to_point`]: a point against a polygon in `O(log n)`.
@@ -54,6 +58,7 @@
 
 pub use polydist_polygon as polygon;
 
+mod bracket;
 mod brute;
 mod construct;
 mod contact;

@@ -9,16 +9,20 @@
 //!   Inner column omits `Q_m`), with strictly interior midpoints.
 //! - Once a range is a single vertex or edge, a one-sided step (Lemma A of the design notes) shrinks the
 //!   other range; the loop is bounded by `⌈log₂n⌉ + ⌈log₂m⌉ + 4` whatever the predicates answer.
-//! - The paper's initial-range steps 3–5 are unproved; we search the chains facing the direction of a
-//!   seed pair (its steps 1–2), which always contain the support faces, certify the answer with
-//!   Theorem 1 in `O(1)` exact tests, reseed from the candidate's own direction when the certificate
-//!   fails, then run the `O(log)` exact contact test ([`contact_with`](crate::contact_with)); a
-//!   disjoint pair on which both searches failed goes to Schwartz's `O(log² N)` search (no initial
-//!   ranges needed), and only an answer that fails the certificate there too (an inexact kernel) to the
-//!   brute force.
+//! - The paper's initial-range steps 3–5 are unproved; we replace them by a proved bracket
+//!   (`bracket.rs`): one exact test tells on which side of `ν₀ = q_0 − p_0` the optimal direction `u`
+//!   lies, and the ranges are the chains whose edge normals lie in that quarter-turn. They hold the
+//!   support faces and lie inside the facing chains, the precondition of the proved main loop, so under
+//!   an exact kernel the answer is always optimal.
+//! - The Theorem-1 certificate (`O(1)` exact tests) stays as a safety net: under Robust and Exact it
+//!   fails only when the polygons meet; then the `O(log)` exact contact test
+//!   ([`contact_with`](crate::contact_with)) classifies them. Under an inexact kernel a failed
+//!   certificate is followed by reseeded searches; a disjoint pair on which they all failed goes to
+//!   Schwartz's `O(log² N)` search, and only an answer that fails the certificate there too to the
+//!   brute force (these fallbacks never run under Robust or Exact on disjoint input: tested).
 //!
-//! Running time: `O(log n + log m)` exact predicates when a certificate holds (every disjoint input
-//! tested so far) and for meeting polygons (the contact test); `O(log² (n + m))` in the worst case.
+//! Running time: `O(log n + log m)` exact predicates on every input (proved: docs, "The proved
+//! bracket"), disjoint or meeting.
 
 use core::any::TypeId;
 
@@ -26,9 +30,10 @@ use glam::DVec2;
 use polydist_polygon::ConvexPolygon;
 use polydist_polygon::predicates::{Kernel, Robust, Sign};
 
+use crate::bracket::{Bracket, bracket};
 use crate::brute::brute_pair;
 use crate::contact::contact_with;
-use crate::extreme::{Nearest, extreme, extreme_left_of, extreme_right_of, nearest_feature};
+use crate::extreme::{Nearest, extreme_left_of, extreme_right_of, nearest_feature};
 use crate::hint::Solved;
 use crate::pair::{Pair, at, canonical, certify, finish, nearer, prev};
 use crate::result::{Separation, bump};
@@ -45,8 +50,16 @@ use crate::schwartz::closest_candidate;
 /// predicate counts was 64.
 pub const SCAN_BELOW: usize = 9;
 
-/// How many reseeded searches follow a failed certificate before the exact contact test.
+/// How many reseeded searches follow a failed certificate under an inexact kernel (under an exact one
+/// the search is proved, so a failure means the polygons meet).
 pub(crate) const RESEEDS: usize = 2;
+
+/// The search again (two polygons with area), seeded by the vertices of `pair`: `ν₀ = q_j − p_i`
+/// (any `p ∈ P`, `q ∈ Q` is a valid seed). Returns the raw candidate.
+pub(crate) fn reseed<K: Kernel>(p: &[DVec2], q: &[DVec2], pair: Pair) -> Pair {
+    let (Pair::Vv(i, j) | Pair::Ve(i, j) | Pair::Ev(i, j)) = pair;
+    search::<K>(p, q, bracket::<K>(p, q, at(p, i), at(q, j))).0
+}
 
 /// `⌈log₂ x⌉` for `x ≥ 1`.
 fn ceil_log2(x: usize) -> u32 {
@@ -182,65 +195,15 @@ fn table1<K: Kernel>(p: &[DVec2], q: &[DVec2], a: usize, b: usize) -> Cell {
     }
 }
 
-/// A direction `l` (the "up" direction of the median line), given by input points so that every
-/// comparison along it is an exact degree-2 sign.
-#[derive(Clone, Copy, Debug)]
-pub(crate) enum Up {
-    /// `l = rot90(t − o)`: the left normal of the seed vector `t − o` (from `P` towards `Q`).
-    LeftOf(DVec2, DVec2),
-    /// `l = t − o`.
-    Along(DVec2, DVec2),
-}
-
-impl Up {
-    /// `sign((x − y)·l)`.
-    fn cmp<K: Kernel>(self, x: DVec2, y: DVec2) -> Sign {
-        match self {
-            Up::LeftOf(o, t) => K::cross_sign(o, t, y, x),
-            Up::Along(o, t) => K::dot_sign(y, x, o, t),
-        }
-    }
-
-    /// The direction `l_w = rot90(w)` of the canonical pair's vector `w = q* − p*`, from input points.
-    pub(crate) fn of_pair<K: Kernel>(p: &[DVec2], q: &[DVec2], pair: Pair) -> Up {
-        match pair {
-            Pair::Vv(i, j) => Up::LeftOf(at(p, i), at(q, j)),
-            Pair::Ve(i, j) => {
-                // w ∝ rot90(b − a) when p_i is right of Q's edge a → b, so l_w ∝ a − b.
-                let (a, b) = (at(q, j), at(q, j + 1));
-                if K::orient(a, b, at(p, i)).sign() == Sign::Negative {
-                    Up::Along(b, a)
-                } else {
-                    Up::Along(a, b)
-                }
-            }
-            Pair::Ev(i, j) => {
-                // w ∝ −rot90(b − a) when q_j is right of P's edge a → b, so l_w ∝ b − a.
-                let (a, b) = (at(p, i), at(p, i + 1));
-                if K::orient(a, b, at(q, j)).sign() == Sign::Negative {
-                    Up::Along(a, b)
-                } else {
-                    Up::Along(b, a)
-                }
-            }
-        }
-    }
-}
-
-/// The main search (notes §3) on the chains facing the direction `rot−90(l)` (notes §4).
-/// Returns a candidate pair (not yet certified) and the iterations used.
-pub(crate) fn search<K: Kernel>(p: &[DVec2], q: &[DVec2], up: Up) -> (Pair, u32) {
+/// The main search (notes §3) on the proved initial ranges `ranges` ([`bracket`], Lemma B2).
+/// Returns a candidate pair (certified by the caller) and the iterations used.
+pub(crate) fn search<K: Kernel>(p: &[DVec2], q: &[DVec2], ranges: Bracket) -> (Pair, u32) {
     let (n, m) = (p.len(), q.len());
-    // Initial ranges: P' = CCW chain from the lowest to the highest vertex along l; Q' = CCW chain of Q
-    // from its highest to its lowest. With l = rot90(t − o) for any o ∈ P, t ∈ Q of disjoint polygons,
-    // (t − o)·u > 0, so both chains contain the support faces; they lie inside P_1, Q_1 only when l is
-    // close enough to l_u (the gap of the paper's steps 3–5, see the docs): the certificate decides.
-    let lp0 = extreme(p, |x, y| up.cmp::<K>(y, x));
-    let hp0 = extreme(p, |x, y| up.cmp::<K>(x, y));
-    let lq0 = extreme(q, |x, y| up.cmp::<K>(x, y));
-    let hq0 = extreme(q, |x, y| up.cmp::<K>(y, x));
-    let (mut lp, mut hp) = (lp0, if hp0 >= lp0 { hp0 } else { hp0 + n });
-    let (mut lq, mut hq) = (lq0, if hq0 >= lq0 { hq0 } else { hq0 + m });
+    // Ranges (Lemma B2): every edge's normal is strictly within 90° of u (of −u for Q), so every
+    // strictly interior vertex is interior to the facing chains P_1, Q_1, and the ranges hold the
+    // support faces F_P(u), F_Q(−u): Table 1 and Lemma A apply at every midpoint.
+    let (mut lp, mut hp) = ranges.p;
+    let (mut lq, mut hq) = ranges.q;
     let bound = ceil_log2(n) + ceil_log2(m) + 4;
     let mut iterations = 0;
     // Each pass either returns or replaces a range of length L ≥ 2 by one of length ≤ ⌈L/2⌉ (the
@@ -341,14 +304,8 @@ pub(crate) fn candidate<K: Kernel>(pp: &ConvexPolygon, qq: &ConvexPolygon) -> Op
         (2, 3..) => segment_polygon::<K>(p, q)?,
         (3.., 2) => segment_polygon::<K>(q, p)?.swapped(),
         (3.., 3..) => {
-            // Seeds (Yang's steps 1–2): q_1 a vertex of Q's nearest feature to p_0, then P's nearest
-            // feature to q_1; the search looks along the direction of that pair.
-            let j = match nearest_feature::<K>(q, p[0])? {
-                Nearest::Vertex(j) | Nearest::Edge(j) => j,
-            };
-            let seed = point_pair(j, nearest_feature::<K>(p, q[j])?).swapped();
-            let (pair, iterations) =
-                search::<K>(p, q, Up::of_pair::<K>(p, q, canonical::<K>(p, q, seed)));
+            // The proved bracket (Lemma B2), seeded by ν₀ = q_0 − p_0: ⟨q − p, u⟩ > 0 for disjoint input.
+            let (pair, iterations) = search::<K>(p, q, bracket::<K>(p, q, p[0], q[0]));
             bump(|s| {
                 s.last_iterations = iterations;
                 s.last_bound = ceil_log2(n) + ceil_log2(m) + 4;
@@ -363,18 +320,20 @@ pub(crate) fn candidate<K: Kernel>(pp: &ConvexPolygon, qq: &ConvexPolygon) -> Op
 /// The distance between two convex polygons by the `O(log m + log n)` search at every size (no scan
 /// for small inputs): [`distance_with`] without its crossover, for tests and benchmarks.
 ///
-/// The search (Yang et al. 2006 rebuilt with exact predicates, see the crate docs) returns a candidate
-/// pair; Theorem 1 certifies it with `O(1)` exact tests. A failed certificate (always the case when the
-/// polygons meet) triggers up to two reseeded searches from the candidate, then the exact `O(log)`
-/// contact test [`contact_with`](crate::contact_with); if that says disjoint (the search failed),
-/// Schwartz's search answers ([`distance_schwartz_with`](crate::distance_schwartz_with), certified the
-/// same way), and the brute force only if that fails too (an inexact kernel).
-/// [`search_stats`](crate::search_stats) counts each event.
+/// The search (Yang et al. 2006 rebuilt with exact predicates, on a proved initial bracket: see the
+/// crate docs) returns a candidate pair; Theorem 1 certifies it with `O(1)` exact tests. Under an exact
+/// kernel the candidate of disjoint polygons is proved optimal, so the certificate fails only when the
+/// polygons meet, and the exact `O(log)` contact test [`contact_with`](crate::contact_with) then
+/// classifies them. Under an inexact kernel a failed certificate triggers up to two reseeded searches,
+/// then the contact test; if that says disjoint, Schwartz's search answers
+/// ([`distance_schwartz_with`](crate::distance_schwartz_with), certified the same way), and the brute
+/// force only if that fails too. [`search_stats`](crate::search_stats) counts each event.
 ///
 /// # Complexity
-/// `O(log n + log m)` exact predicates when the certificate holds (every disjoint input we have
-/// tested: see the docs) and for touching or overlapping polygons; `O(log² (n + m))` when Schwartz's
-/// search is needed; `O(nm)` only when an inexact kernel defeats both certified searches.
+/// `O(log n + log m)` exact predicates under Robust and Exact, for every input (disjoint: four extreme
+/// searches, five signs, at most `⌈log₂n⌉ + ⌈log₂m⌉ + 4` passes of the main loop and the certificate;
+/// meeting: the same plus the contact test). Under an inexact kernel `O(log² (n + m))` when Schwartz's
+/// search is needed and `O(nm)` only when it defeats both certified searches.
 ///
 /// # Examples
 /// ```
@@ -426,12 +385,13 @@ pub(crate) fn solve_yang<K: Kernel>(pp: &ConvexPolygon, qq: &ConvexPolygon) -> S
         first
     };
     bump(|s| s.certificate_failures += 1);
-    if let (Some(mut pair), true) = (first, p.len() >= 3 && q.len() >= 3) {
-        // Reseed from the candidate's own direction, which is close to u when the candidate is close
-        // to the answer: the ranges then fit inside the facing chains.
+    // Under an exact kernel the search is proved (docs, "The proved bracket"): a failed certificate
+    // means the polygons meet. Under an inexact one, search again seeded from the candidate's own
+    // vertices (any p ∈ P, q ∈ Q give a valid ν₀), which may avoid the inconsistent signs.
+    if let (Some(mut pair), true, true) = (first, !K::EXACT_DECISIONS, p.len() >= 3 && q.len() >= 3)
+    {
         for _ in 0..RESEEDS {
-            let (again, _) = search::<K>(p, q, Up::of_pair::<K>(p, q, pair));
-            let again = canonical::<K>(p, q, again);
+            let again = canonical::<K>(p, q, reseed::<K>(p, q, pair));
             if certify::<K>(p, q, again) {
                 bump(|s| s.repaired_by_retry += 1);
                 return Solved::Disjoint(finish::<K>(pp, qq, again), again);

@@ -19,7 +19,7 @@ use super::chain::{Best, Callers};
 use super::stats::bump;
 use super::tenstep::{Ring, scan_all, tenstep};
 use crate::pair::{Pair, canonical, certify};
-use crate::yang::{RESEEDS, Up, candidate, search};
+use crate::yang::{RESEEDS, candidate, reseed};
 
 /// Below this many vertex pairs (or with a point or a segment on one side) a node is scanned.
 const SCAN_PAIRS: usize = 64;
@@ -101,7 +101,7 @@ fn bridge<K: Kernel>(c: &Part, d: &Part) -> Option<Pair> {
         return Some(pair);
     }
     for _ in 0..RESEEDS {
-        let again = canonical::<K>(p, q, search::<K>(p, q, Up::of_pair::<K>(p, q, pair)).0);
+        let again = canonical::<K>(p, q, reseed::<K>(p, q, pair));
         if certify::<K>(p, q, again) {
             return Some(again);
         }

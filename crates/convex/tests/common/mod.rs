@@ -291,3 +291,42 @@ impl Kernel for Chaos {
         })
     }
 }
+
+/// The strictly separated vertex subsets of `p` (left of `a → b`) and `q` (right of it), when both are
+/// polygons with area: the "clipped subsets" family (long lid edges on both sides of the cut).
+pub(crate) fn clipped(
+    p: &[DVec2],
+    q: &[DVec2],
+    a: DVec2,
+    b: DVec2,
+) -> Option<(Vec<DVec2>, Vec<DVec2>)> {
+    use polydist_convex::polygon::predicates::Robust;
+    let side = |s: Sign| move |x: &&DVec2| Robust::orient(a, b, **x).sign() == s;
+    let c: Vec<DVec2> = p.iter().filter(side(Sign::Positive)).copied().collect();
+    let d: Vec<DVec2> = q.iter().filter(side(Sign::Negative)).copied().collect();
+    if c.len() < 3 || d.len() < 3 {
+        return None;
+    }
+    ConvexPolygon::try_new(&c).ok()?;
+    ConvexPolygon::try_new(&d).ok()?;
+    Some((c, d))
+}
+
+/// A clipped-subsets pair (see [`clipped`]) cut from two overlapping `n`-gons, by a line through a
+/// random vertex of each; `None` when a side keeps fewer than three vertices.
+pub(crate) fn clipped_pair(
+    rng: &mut SplitMix64,
+    n: usize,
+    round: usize,
+) -> Option<(Vec<DVec2>, Vec<DVec2>)> {
+    let (p, q) = if round % 2 == 0 && n <= 400 {
+        let pair = convex_pair(rng, n, n, Relation::Overlapping);
+        (pair.p, pair.q)
+    } else {
+        let p = random_convex(rng, n, DVec2::ZERO, 1.0);
+        let q = random_convex(rng, n, DVec2::new(0.6, 0.1), 1.0);
+        (p, q)
+    };
+    let (a, b) = (p[rng.index(p.len())], q[rng.index(q.len())]);
+    (a != b).then(|| clipped(&p, &q, a, b)).flatten()
+}
