@@ -1,0 +1,241 @@
+//! The hard-case suite (issue 8): every convex algorithm under every kernel on every case of
+//! `fixtures/hard/convex.txt`, against the exact answers stored with the case (computed by the oracle
+//! when the file was generated, never by an algorithm under test).
+//!
+//! Under Robust and Exact: exact optimal features and the documented bounds on every case, no
+//! exceptions (distance within 3.5 ulps, squared distance within 5, Hausdorff within 3.5, CMMR within 6).
+//! Under Fast: the number of wrong answers is recorded and printed; only termination without a panic
+//! is asserted.
+
+use std::collections::BTreeMap;
+use std::str::FromStr;
+
+use glam::DVec2;
+use polydist::convex::{
+    Separation, cmmr_with, distance_brute, distance_schwartz_with, distance_with,
+    distance_yang_with, hausdorff_with, min_vertex_distance_with,
+};
+use polydist::polygon::{ConvexPolygon, Feature};
+use polydist::predicates::{BigRational, Exact, Fast, Kernel, Robust};
+use polydist_fixtures::{HardCase, hard_cases};
+use polydist_oracle::{ulps_error, ulps_error_sqrt};
+
+/// The parsed answers of one case.
+struct Answers {
+    contact: String,
+    dist: BigRational,
+    pairs: Vec<(Feature, Feature)>,
+    vdist: BigRational,
+    vpairs: Vec<(usize, usize)>,
+    hpq: BigRational,
+    apq: Vec<usize>,
+    hqp: BigRational,
+    aqp: Vec<usize>,
+    cmmr: BigRational,
+}
+
+fn feature(w: &str) -> Feature {
+    let (kind, i) = w.split_at(1);
+    let i = i.parse().expect("feature index");
+    if kind == "V" {
+        Feature::Vertex(i)
+    } else {
+        Feature::Edge(i)
+    }
+}
+
+fn rational(w: &str) -> BigRational {
+    BigRational::from_str(w).expect("rational")
+}
+
+fn answers(c: &HardCase) -> Answers {
+    let a = |k: &str| {
+        c.answer(k)
+            .unwrap_or_else(|| panic!("{}: no `{k}`", c.name))
+    };
+    let indices =
+        |w: &[String]| -> Vec<usize> { w.iter().map(|x| x.parse().expect("index")).collect() };
+    let pair_of = |w: &String, f: &dyn Fn(&str) -> Feature| {
+        let (x, y) = w.split_once(':').expect("pair");
+        (f(x), f(y))
+    };
+    Answers {
+        contact: a("contact")[0].clone(),
+        dist: rational(&a("dist")[0]),
+        pairs: a("dist")[1..]
+            .iter()
+            .map(|w| pair_of(w, &feature))
+            .collect(),
+        vdist: rational(&a("vdist")[0]),
+        vpairs: a("vdist")[1..]
+            .iter()
+            .map(|w| {
+                let (x, y) = w.split_once(':').expect("pair");
+                (x.parse().expect("i"), y.parse().expect("j"))
+            })
+            .collect(),
+        hpq: rational(&a("hpq")[0]),
+        apq: indices(&a("hpq")[1..]),
+        hqp: rational(&a("hqp")[0]),
+        aqp: indices(&a("hqp")[1..]),
+        cmmr: rational(&a("cmmr")[0]),
+    }
+}
+
+fn points(v: &[[f64; 2]]) -> Vec<DVec2> {
+    v.iter().map(|&[x, y]| DVec2::new(x, y)).collect()
+}
+
+/// What went wrong on one case, or `None`.
+type Check = Option<String>;
+
+fn check_distance(s: &Separation, a: &Answers) -> Check {
+    match (s, a.contact.as_str()) {
+        (Separation::Disjoint(c), "disjoint") => {
+            if !a.pairs.contains(&(c.feature_p, c.feature_q)) {
+                return Some(format!(
+                    "features {:?} {:?} not optimal",
+                    c.feature_p, c.feature_q
+                ));
+            }
+            let (e, e2) = (
+                ulps_error_sqrt(c.distance, &a.dist),
+                ulps_error(c.squared_distance, &a.dist),
+            );
+            (e > 3.5 || e2 > 5.0).then(|| format!("distance off by {e} ulps, squared by {e2}"))
+        }
+        (
+            Separation::Touching {
+                feature_p,
+                feature_q,
+                ..
+            },
+            "touching",
+        ) => (!a.pairs.contains(&(*feature_p, *feature_q)))
+            .then(|| format!("touching features {feature_p:?} {feature_q:?} do not meet")),
+        (Separation::Overlapping, "overlapping") => None,
+        (s, c) => Some(format!("outcome {s:?}, expected {c}")),
+    }
+}
+
+/// Every algorithm of the convex crate on one case under `K`: (algorithm, failure) pairs.
+fn run_case<K: Kernel>(
+    p: &ConvexPolygon,
+    q: &ConvexPolygon,
+    a: &Answers,
+) -> Vec<(&'static str, Check)> {
+    let mut out = vec![
+        (
+            "distance (dispatch)",
+            check_distance(&distance_with::<K>(p, q), a),
+        ),
+        (
+            "distance Yang",
+            check_distance(&distance_yang_with::<K>(p, q), a),
+        ),
+        (
+            "distance Schwartz",
+            check_distance(&distance_schwartz_with::<K>(p, q), a),
+        ),
+        (
+            "distance brute force",
+            check_distance(&distance_brute::<K>(p, q), a),
+        ),
+    ];
+    let v = min_vertex_distance_with::<K>(p, q);
+    out.push((
+        "vertex distance",
+        if a.vpairs.contains(&(v.vertex_p, v.vertex_q)) {
+            let e = ulps_error_sqrt(v.distance, &a.vdist);
+            (e > 3.5).then(|| format!("vertex distance off by {e} ulps"))
+        } else {
+            Some(format!(
+                "vertex pair {}:{} not optimal",
+                v.vertex_p, v.vertex_q
+            ))
+        },
+    ));
+    let h = hausdorff_with::<K>(p, q);
+    let hmax = if a.hpq >= a.hqp { &a.hpq } else { &a.hqp };
+    out.push((
+        "Hausdorff",
+        if !a.apq.contains(&h.p_to_q.vertex) || !a.aqp.contains(&h.q_to_p.vertex) {
+            Some(format!(
+                "argmax {} / {} not optimal",
+                h.p_to_q.vertex, h.q_to_p.vertex
+            ))
+        } else {
+            let e = ulps_error_sqrt(h.distance, hmax);
+            (e > 3.5).then(|| format!("Hausdorff off by {e} ulps"))
+        },
+    ));
+    let c = cmmr_with::<K>(p, q);
+    let e = ulps_error(c.value, &a.cmmr);
+    out.push(("CMMR", (e > 6.0).then(|| format!("CMMR off by {e} ulps"))));
+    out
+}
+
+#[test]
+fn every_convex_algorithm_on_every_hard_case() {
+    let cases = hard_cases("hard/convex.txt").expect("fixtures/hard/convex.txt");
+    assert!(cases.len() >= 80, "the suite shrank: {} cases", cases.len());
+    let mut failures = Vec::new();
+    let mut fast_wrong: BTreeMap<&str, usize> = BTreeMap::new();
+    for c in &cases {
+        let a = answers(c);
+        let (p, q) = (
+            ConvexPolygon::try_new(&points(&c.p)).expect("convex"),
+            ConvexPolygon::try_new(&points(&c.q)).expect("convex"),
+        );
+        for (kernel, results) in [
+            ("Robust", run_case::<Robust>(&p, &q, &a)),
+            ("Exact", run_case::<Exact>(&p, &q, &a)),
+        ] {
+            for (alg, r) in results {
+                if let Some(why) = r {
+                    failures.push(format!("{kernel} {alg} {}/{}: {why}", c.family, c.name));
+                }
+            }
+        }
+        for (alg, r) in run_case::<Fast>(&p, &q, &a) {
+            *fast_wrong.entry(alg).or_default() += usize::from(r.is_some());
+        }
+    }
+    eprintln!(
+        "Fast kernel, wrong answers of {} hard cases: {fast_wrong:?}",
+        cases.len()
+    );
+    assert!(
+        failures.is_empty(),
+        "{} failures:\n{}",
+        failures.len(),
+        failures.join("\n")
+    );
+}
+
+#[test]
+fn the_suite_covers_every_family() {
+    let cases = hard_cases("hard/convex.txt").expect("fixtures/hard/convex.txt");
+    for family in [
+        "nearly_touching",
+        "relative_gap",
+        "touching",
+        "huge_offset",
+        "parallel",
+        "parallel_ulp_off",
+        "cocircular",
+        "cocircular_perturbed",
+        "collinear_input",
+        "sliver",
+        "sliver_1e9",
+        "overlapping",
+        "nested",
+        "identical",
+        "far",
+    ] {
+        assert!(
+            cases.iter().any(|c| c.family == family),
+            "no case of {family}"
+        );
+    }
+}
