@@ -246,6 +246,37 @@ fn main() {
             }
         }
     }
+    // The same sets far from the origin (integer moves, exact) with k up to 10: the squared
+    // distances then exceed 2^53, so plain f64 cannot separate the near-ties a one-ulp move makes.
+    for k in [6u32, 8, 10] {
+        let r = 5f64.powi(k as i32);
+        let arc =
+            |pts: Vec<DVec2>| -> Vec<DVec2> { pts.into_iter().filter(|v| v.x > r / 2.0).collect() };
+        let q = vec![DVec2::ZERO, DVec2::new(-r, r), DVec2::new(-r, -r)];
+        let full = cocircular(k);
+        let index = full.iter().position(|v| v.x > r / 2.0).unwrap_or(0);
+        for off in [2f64.powi(26), 2f64.powi(40)] {
+            for steps in [0i64, -1, 1] {
+                let p = arc(if steps == 0 {
+                    cocircular(k)
+                } else {
+                    cocircular_perturbed(k, index, steps)
+                });
+                let (Some(pm), Some(qm)) = (moved(&p, off, -off), moved(&q, off, -off)) else {
+                    continue;
+                };
+                if pm.len() >= 3 && polydist_oracle::is_convex(&pm) {
+                    case(
+                        &mut out,
+                        "cocircular_far",
+                        &format!("k{k}_{steps}_2^{}", off.log2()),
+                        &pm,
+                        &qm,
+                    );
+                }
+            }
+        }
+    }
     // Collinear input vertices, slivers, far apart.
     for (label, rel) in [
         ("collinear_input", Relation::CollinearInput),

@@ -7,79 +7,38 @@
 //! Under Fast: the number of wrong answers is recorded and printed; only termination without a panic
 //! is asserted.
 
-use std::collections::BTreeMap;
-use std::str::FromStr;
-
 use glam::DVec2;
 use polydist::convex::{
     Separation, cmmr_with, distance_brute, distance_schwartz_with, distance_with,
     distance_yang_with, hausdorff_with, min_vertex_distance_with,
 };
 use polydist::polygon::{ConvexPolygon, Feature};
-use polydist::predicates::{BigRational, Exact, Fast, Kernel, Robust};
+use polydist::predicates::{Exact, Fast, Kernel, Robust};
 use polydist_fixtures::{HardCase, hard_cases};
-use polydist_oracle::{ulps_error, ulps_error_sqrt};
+use polydist_oracle::{HardAnswers, ulps_error, ulps_error_sqrt};
+use std::collections::BTreeMap;
 
-/// The parsed answers of one case.
+/// The answers of a case, with the oracle's features as polydist's.
 struct Answers {
-    contact: String,
-    dist: BigRational,
+    exact: HardAnswers,
     pairs: Vec<(Feature, Feature)>,
-    vdist: BigRational,
-    vpairs: Vec<(usize, usize)>,
-    hpq: BigRational,
-    apq: Vec<usize>,
-    hqp: BigRational,
-    aqp: Vec<usize>,
-    cmmr: BigRational,
 }
 
-fn feature(w: &str) -> Feature {
-    let (kind, i) = w.split_at(1);
-    let i = i.parse().expect("feature index");
-    if kind == "V" {
-        Feature::Vertex(i)
-    } else {
-        Feature::Edge(i)
+fn ours(f: polydist_oracle::Feature) -> Feature {
+    match f {
+        polydist_oracle::Feature::Vertex(i) => Feature::Vertex(i),
+        polydist_oracle::Feature::Edge(i) => Feature::Edge(i),
     }
-}
-
-fn rational(w: &str) -> BigRational {
-    BigRational::from_str(w).expect("rational")
 }
 
 fn answers(c: &HardCase) -> Answers {
-    let a = |k: &str| {
-        c.answer(k)
-            .unwrap_or_else(|| panic!("{}: no `{k}`", c.name))
-    };
-    let indices =
-        |w: &[String]| -> Vec<usize> { w.iter().map(|x| x.parse().expect("index")).collect() };
-    let pair_of = |w: &String, f: &dyn Fn(&str) -> Feature| {
-        let (x, y) = w.split_once(':').expect("pair");
-        (f(x), f(y))
-    };
-    Answers {
-        contact: a("contact")[0].clone(),
-        dist: rational(&a("dist")[0]),
-        pairs: a("dist")[1..]
-            .iter()
-            .map(|w| pair_of(w, &feature))
-            .collect(),
-        vdist: rational(&a("vdist")[0]),
-        vpairs: a("vdist")[1..]
-            .iter()
-            .map(|w| {
-                let (x, y) = w.split_once(':').expect("pair");
-                (x.parse().expect("i"), y.parse().expect("j"))
-            })
-            .collect(),
-        hpq: rational(&a("hpq")[0]),
-        apq: indices(&a("hpq")[1..]),
-        hqp: rational(&a("hqp")[0]),
-        aqp: indices(&a("hqp")[1..]),
-        cmmr: rational(&a("cmmr")[0]),
-    }
+    let exact = HardAnswers::from_words(&c.answers).unwrap_or_else(|e| panic!("{}: {e}", c.name));
+    let pairs = exact
+        .pairs
+        .iter()
+        .map(|&(f, g)| (ours(f), ours(g)))
+        .collect();
+    Answers { exact, pairs }
 }
 
 fn points(v: &[[f64; 2]]) -> Vec<DVec2> {
@@ -90,7 +49,7 @@ fn points(v: &[[f64; 2]]) -> Vec<DVec2> {
 type Check = Option<String>;
 
 fn check_distance(s: &Separation, a: &Answers) -> Check {
-    match (s, a.contact.as_str()) {
+    match (s, a.exact.contact.as_str()) {
         (Separation::Disjoint(c), "disjoint") => {
             if !a.pairs.contains(&(c.feature_p, c.feature_q)) {
                 return Some(format!(
@@ -99,8 +58,8 @@ fn check_distance(s: &Separation, a: &Answers) -> Check {
                 ));
             }
             let (e, e2) = (
-                ulps_error_sqrt(c.distance, &a.dist),
-                ulps_error(c.squared_distance, &a.dist),
+                ulps_error_sqrt(c.distance, &a.exact.dist),
+                ulps_error(c.squared_distance, &a.exact.dist),
             );
             (e > 3.5 || e2 > 5.0).then(|| format!("distance off by {e} ulps, squared by {e2}"))
         }
@@ -145,8 +104,8 @@ fn run_case<K: Kernel>(
     let v = min_vertex_distance_with::<K>(p, q);
     out.push((
         "vertex distance",
-        if a.vpairs.contains(&(v.vertex_p, v.vertex_q)) {
-            let e = ulps_error_sqrt(v.distance, &a.vdist);
+        if a.exact.vpairs.contains(&(v.vertex_p, v.vertex_q)) {
+            let e = ulps_error_sqrt(v.distance, &a.exact.vdist);
             (e > 3.5).then(|| format!("vertex distance off by {e} ulps"))
         } else {
             Some(format!(
@@ -156,10 +115,14 @@ fn run_case<K: Kernel>(
         },
     ));
     let h = hausdorff_with::<K>(p, q);
-    let hmax = if a.hpq >= a.hqp { &a.hpq } else { &a.hqp };
+    let hmax = if a.exact.hpq >= a.exact.hqp {
+        &a.exact.hpq
+    } else {
+        &a.exact.hqp
+    };
     out.push((
         "Hausdorff",
-        if !a.apq.contains(&h.p_to_q.vertex) || !a.aqp.contains(&h.q_to_p.vertex) {
+        if !a.exact.apq.contains(&h.p_to_q.vertex) || !a.exact.aqp.contains(&h.q_to_p.vertex) {
             Some(format!(
                 "argmax {} / {} not optimal",
                 h.p_to_q.vertex, h.q_to_p.vertex
@@ -170,7 +133,7 @@ fn run_case<K: Kernel>(
         },
     ));
     let c = cmmr_with::<K>(p, q);
-    let e = ulps_error(c.value, &a.cmmr);
+    let e = ulps_error(c.value, &a.exact.cmmr);
     out.push(("CMMR", (e > 6.0).then(|| format!("CMMR off by {e} ulps"))));
     out
 }
@@ -225,6 +188,7 @@ fn the_suite_covers_every_family() {
         "parallel_ulp_off",
         "cocircular",
         "cocircular_perturbed",
+        "cocircular_far",
         "collinear_input",
         "sliver",
         "sliver_1e9",
