@@ -203,3 +203,92 @@ fn the_suite_covers_every_family() {
         );
     }
 }
+
+/// The simple-polygon cases (`fixtures/hard/simple.txt`, hulls disjoint): `separation` and its
+/// brute-force twin under every kernel.
+#[test]
+fn polygon_separation_on_every_simple_hard_case() {
+    use polydist::polygon::SimplePolygon;
+    use polydist::separation::{PolygonSeparation, Route, polygon_separation_brute, separation};
+
+    let cases = hard_cases("hard/simple.txt").expect("fixtures/hard/simple.txt");
+    assert!(cases.len() >= 25, "the suite shrank: {} cases", cases.len());
+    fn check<K: Kernel>(p: &SimplePolygon, q: &SimplePolygon, c: &HardCase, brute: bool) -> Check {
+        let contact = &c.answer("contact").expect("contact")[0];
+        let dist = c.answer("dist").expect("dist");
+        let sq: polydist::predicates::BigRational = dist[0].parse().expect("rational");
+        let pairs: Vec<(Feature, Feature)> = dist[1..]
+            .iter()
+            .map(|w| {
+                let (a, b) = w.split_once(':').expect("pair");
+                let f = |x: &str| {
+                    let i = x[1..].parse().expect("index");
+                    if x.starts_with('V') {
+                        Feature::Vertex(i)
+                    } else {
+                        Feature::Edge(i)
+                    }
+                };
+                (f(a), f(b))
+            })
+            .collect();
+        let answer = if brute {
+            polygon_separation_brute::<K>(p, q)
+        } else {
+            separation::<K>(p, q)
+        };
+        match (answer, contact.as_str()) {
+            (Ok(PolygonSeparation::Separated { pair, .. }), "disjoint") => {
+                if !pairs.contains(&(pair.feature_p, pair.feature_q)) {
+                    return Some(format!(
+                        "features {:?} {:?} not optimal",
+                        pair.feature_p, pair.feature_q
+                    ));
+                }
+                let e = ulps_error_sqrt(pair.distance, &sq);
+                (e > 3.5).then(|| format!("distance off by {e} ulps"))
+            }
+            (Ok(PolygonSeparation::Intersecting(_)), "touching" | "overlapping") => None,
+            (a, c) => Some(format!("answer {a:?}, expected {c}")),
+        }
+    }
+    let mut failures = Vec::new();
+    let (mut fast_wrong, mut chains) = (0, 0);
+    for c in &cases {
+        let (p, q) = (
+            SimplePolygon::try_new(&points(&c.p)).expect("simple"),
+            SimplePolygon::try_new(&points(&c.q)).expect("simple"),
+        );
+        if let Ok(PolygonSeparation::Separated {
+            route: Route::SeparableChains,
+            ..
+        }) = separation::<Robust>(&p, &q)
+        {
+            chains += 1;
+        }
+        for (name, r) in [
+            ("Robust separation", check::<Robust>(&p, &q, c, false)),
+            ("Exact separation", check::<Exact>(&p, &q, c, false)),
+            ("Robust brute force", check::<Robust>(&p, &q, c, true)),
+        ] {
+            if let Some(why) = r {
+                failures.push(format!("{name} {}/{}: {why}", c.family, c.name));
+            }
+        }
+        fast_wrong += usize::from(check::<Fast>(&p, &q, c, false).is_some());
+    }
+    eprintln!(
+        "Fast kernel, wrong separations: {fast_wrong} of {}",
+        cases.len()
+    );
+    assert!(
+        chains >= 5,
+        "the separable-chains route ran on {chains} cases only"
+    );
+    assert!(
+        failures.is_empty(),
+        "{} failures:\n{}",
+        failures.len(),
+        failures.join("\n")
+    );
+}
