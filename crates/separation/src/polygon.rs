@@ -163,8 +163,10 @@ fn piece(p: &SimplePolygon, e: usize) -> BoundaryPiece {
 
 /// The separation σ(P, Q) of two simple polygons with a realizing pair, or how they meet.
 ///
-/// [`intersection`] first (disjoint polygons only have a separation), then
-/// [`separation_of_disjoint`]. Every decision is exact under `K` = `Robust` or `Exact`.
+/// First the hulls (as in [`separation_of_disjoint`]): disjoint hulls hold disjoint polygons, and the
+/// fast path answers. When the hulls meet, [`intersection`] decides whether the polygons meet
+/// ([`PolygonSeparation::Intersecting`]); if they do not, the separator case remains. Every decision is
+/// exact under `K` = `Robust` or `Exact`.
 ///
 /// # Errors
 /// [`SeparationError::HullsIntersect`] when the polygons are disjoint but their convex hulls meet (the
@@ -172,7 +174,8 @@ fn piece(p: &SimplePolygon, e: usize) -> BoundaryPiece {
 /// `Fast` kernel.
 ///
 /// # Complexity
-/// `O(N log N)` for the intersection check, then `O(N)` (see [`separation_of_disjoint`]).
+/// As [`separation_of_disjoint`] when the hulls are disjoint (`O(N)` plus section 3); `O(N log N)` for
+/// the intersection check when they meet.
 ///
 /// # Examples
 /// ```
@@ -199,10 +202,14 @@ pub fn separation<K: Kernel>(
     p: &SimplePolygon,
     q: &SimplePolygon,
 ) -> Result<PolygonSeparation, SeparationError> {
-    if let Some(meet) = intersection::<K>(p, q) {
-        return Ok(PolygonSeparation::Intersecting(meet));
+    // Disjoint hulls contain disjoint polygons: the sweep is needed only when the hulls meet.
+    match separation_of_disjoint::<K>(p, q) {
+        Err(SeparationError::HullsIntersect) => match intersection::<K>(p, q) {
+            Some(meet) => Ok(PolygonSeparation::Intersecting(meet)),
+            None => Err(SeparationError::HullsIntersect),
+        },
+        answer => answer,
     }
-    separation_of_disjoint::<K>(p, q)
 }
 
 /// σ(P, Q) of two simple polygons the caller knows to be disjoint (for instance from
