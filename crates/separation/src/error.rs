@@ -82,6 +82,13 @@ pub enum SeparationError {
         /// The caller's index of a vertex where the violation was found.
         index: usize,
     },
+    /// The two simple polygons are disjoint but their convex hulls meet (interlocked shapes, or one
+    /// polygon in a pocket of the other). Section 2 of Amato's report handles this case with a
+    /// separator `S(P, Q)`, which is not built yet: see `docs/algorithms/separation.md`.
+    #[error(
+        "the convex hulls of the two polygons meet: this case needs Amato's separators, not implemented yet"
+    )]
+    HullsIntersect,
     /// The search found no admissible vertex pair. With an exact kernel this cannot happen (it would
     /// be a bug); with the `Fast` kernel inconsistent decisions can cause it.
     #[error(

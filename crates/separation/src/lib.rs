@@ -48,9 +48,11 @@ mod error;
 mod frame;
 mod param;
 mod pieces;
+mod polygon;
 mod region;
 mod result;
 mod sigma;
+mod simple_distance;
 mod wedge;
 
 pub use brute::{closest_visible_vertices_brute, separation_brute};
@@ -58,5 +60,10 @@ pub use cve::{CveMatrix, EdgeEntry, compare_edge_entries};
 pub use cvv::{CvvMatrix, MatrixEntry, closest_visible_vertices, compare_entries};
 pub use envelope::{Envelope, perpendicular_envelope, perpendicular_envelope_brute};
 pub use error::{Chain, SeparationError};
+pub use polygon::{
+    BoundaryPiece, Intersection, PolygonSeparation, Route, intersection, polygon_separation_brute,
+    separation, separation_of_disjoint,
+};
 pub use result::{ChainSeparation, ClosestPair, Cvv, CvvStats, SeparationStats};
 pub use sigma::separation_of_chains;
+pub use simple_distance::{BoundaryPoint, PointToPolygon, point_to_polygon, segment_to_polygon};
