@@ -72,15 +72,15 @@ pub use error::{SceneError, SceneErrors};
 pub use generate::MAX_VERTICES;
 pub use load::{
     Body, ContactParams, DEFAULT_MAX_STEPS, DEFAULT_RELATIVE_TOLERANCE, FRAME_SLACK, MAX_BODIES,
-    MAX_FILE_BYTES, MAX_FRAMES, MAX_PAIR_FRAMES, MAX_PAIRS, Origin, Query, Scene, Shape, TimeSpan,
-    load_file, load_str, parse_polygon_file, parse_spec, validate,
+    MAX_FILE_BYTES, MAX_FRAME_CANDIDATES, MAX_FRAMES, MAX_PAIR_FRAMES, MAX_PAIRS, Origin, PairSet,
+    Query, Scene, Shape, TimeSpan, load_file, load_str, parse_polygon_file, parse_spec, validate,
 };
 pub use motion::{Keyframe, Motion, relative_speed_bound};
 pub use report::{
     ClosestPoints, ContactOutcome, ContactResult, Cost, Costs, FeatureRef, FrameResult, PairReport,
     REPORT_VERSION, Report, Status, TimeReport, VertexDistanceResult,
 };
-pub use run::{PairJob, Plan, RunOptions, plan, run, run_with_progress};
+pub use run::{PairJob, Plan, RunOptions, Streamed, plan, run, run_with_progress};
 pub use spec::{
     BodySpec, Effect, EffectSet, GeneratorSpec, KernelChoice, KeyframeSpec, KindSpec, MotionSpec,
     PairsSpec, PoseSpec, QuerySpec, SceneSpec, TimeSpec,

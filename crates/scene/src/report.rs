@@ -30,8 +30,14 @@ pub struct Report {
     pub pairs_beyond: u64,
     /// What each effect computed and what it cost.
     pub costs: Costs,
-    /// `true` when some pair failed (an invalid body at some time, or an undecided `first_contact`).
+    /// `true` when some pair failed (an invalid body at some time, or an undecided `first_contact`),
+    /// or the run stopped a streamed query at a limit (`errors`).
     pub failed: bool,
+    /// Problems of the run as a whole (not of one pair): a streamed query (all pairs with `within`)
+    /// stopped at a run-time limit ([`MAX_FRAME_CANDIDATES`](crate::MAX_FRAME_CANDIDATES),
+    /// [`MAX_PAIR_FRAMES`](crate::MAX_PAIR_FRAMES)), naming the frame. Omitted from JSON when empty.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub errors: Vec<String>,
 }
 
 /// The time span of the run.
@@ -298,6 +304,16 @@ pub struct Costs {
     /// Pair-frames beyond their query's `within` (by the broad or the narrow phase); these frames are
     /// not in the report.
     pub within_beyond: u64,
+    /// Pair jobs the plan materialized (one per distinct listed pair, or per pair of an all-pairs
+    /// query that is not streamed). A streamed query (all pairs, `within`, no `first_contact`)
+    /// adds none.
+    pub pair_jobs: u64,
+    /// Candidate pair-frames of streamed queries: pairs the broad phase could not certify beyond
+    /// `within` (every in-scope pair without the broad phase), each one narrow-phase evaluation.
+    pub streamed_candidates: u64,
+    /// The most candidate pairs of streamed queries held at once (in one frame): with the bodies
+    /// and the reported results, what a streamed query's memory grows with.
+    pub max_frame_candidates: u64,
 }
 
 impl Cost {
@@ -334,6 +350,9 @@ impl Costs {
             broad_phase_examined: self.broad_phase_examined + o.broad_phase_examined,
             broad_phase_skipped: self.broad_phase_skipped + o.broad_phase_skipped,
             within_beyond: self.within_beyond + o.within_beyond,
+            pair_jobs: self.pair_jobs + o.pair_jobs,
+            streamed_candidates: self.streamed_candidates + o.streamed_candidates,
+            max_frame_candidates: self.max_frame_candidates.max(o.max_frame_candidates),
         }
     }
 
@@ -472,6 +491,16 @@ impl Report {
                 "({} pair-frames beyond `within` not listed; {} pairs beyond at every frame left out)",
                 c.within_beyond, self.pairs_beyond
             );
+        }
+        if c.streamed_candidates > 0 {
+            let _ = writeln!(
+                s,
+                "(all pairs within: {} candidate pair-frames evaluated, at most {} in one frame; {} pair jobs planned)",
+                c.streamed_candidates, c.max_frame_candidates, c.pair_jobs
+            );
+        }
+        for e in &self.errors {
+            let _ = writeln!(s, "\nerror: {e}");
         }
         if self.failed {
             let _ = writeln!(s, "\nSOME PAIRS FAILED (see above)");

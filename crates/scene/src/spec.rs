@@ -372,6 +372,21 @@ impl EffectSet {
         EffectSet(self.0 | other.0)
     }
 
+    /// Whether the set has an effect computed per frame (`distance`, `closest_points`,
+    /// `vertex_distance`, `hausdorff`, `cmmr`).
+    #[must_use]
+    pub fn has_per_frame(self) -> bool {
+        [
+            Effect::Distance,
+            Effect::ClosestPoints,
+            Effect::VertexDistance,
+            Effect::Hausdorff,
+            Effect::Cmmr,
+        ]
+        .into_iter()
+        .any(|e| self.contains(e))
+    }
+
     /// The effects in report order.
     pub fn iter(self) -> impl Iterator<Item = Effect> {
         Effect::ALL.into_iter().filter(move |&e| self.contains(e))
