@@ -240,6 +240,10 @@ pub struct RunOptions {
     /// The number of threads: `None` uses rayon's global pool (all cores, or `RAYON_NUM_THREADS`);
     /// `Some(n)` runs on a pool of `n` threads. The results are identical for every count.
     pub threads: Option<usize>,
+    /// The most candidate pairs of streamed queries in one frame: default and ceiling
+    /// [`MAX_FRAME_CANDIDATES`] (a larger value is taken as that). A run reaching it stops the
+    /// streamed queries with an error in [`Report::errors`].
+    pub max_frame_candidates: u64,
 }
 
 impl Default for RunOptions {
@@ -250,6 +254,7 @@ impl Default for RunOptions {
             count_predicates: true,
             broad_phase: true,
             threads: None,
+            max_frame_candidates: MAX_FRAME_CANDIDATES,
         }
     }
 }
@@ -546,7 +551,7 @@ fn run_with<K: Kernel>(
         // The streamed queries at this frame: the pairs in scope, at most `budget` candidates.
         let stream = streamed.filter(|_| streaming && (k == 0 || any_moving));
         let scope = if stream.is_some() { in_scope(k) } else { 0 };
-        let budget = MAX_FRAME_CANDIDATES.min(
+        let budget = options.max_frame_candidates.min(MAX_FRAME_CANDIDATES).min(
             u64::try_from(MAX_PAIR_FRAMES)
                 .unwrap_or(u64::MAX)
                 .saturating_sub(streamed_total),
@@ -670,11 +675,12 @@ fn run_with<K: Kernel>(
                     .collect();
                 errors.push(format!(
                     "{} (all pairs within {}): stopped at frame {k} (t = {t}): more than {budget} \
-                     candidate pairs (limits: {MAX_FRAME_CANDIDATES} per frame, \
-                     MAX_FRAME_CANDIDATES; {MAX_PAIR_FRAMES} pair-frames per run, MAX_PAIR_FRAMES); \
-                     no frame from t = {t} on is computed for them: lower `within` or list the pairs",
+                     candidate pairs (limits: {} per frame, MAX_FRAME_CANDIDATES; \
+                     {MAX_PAIR_FRAMES} pair-frames per run, MAX_PAIR_FRAMES); no frame from \
+                     t = {t} on is computed for them: lower `within` or list the pairs",
                     names.join(", "),
-                    s.within
+                    s.within,
+                    options.max_frame_candidates.min(MAX_FRAME_CANDIDATES)
                 ));
             } else {
                 let ask = Ask {
