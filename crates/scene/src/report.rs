@@ -203,9 +203,10 @@ pub struct FrameResult {
     /// When `vertex_distance` was asked.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub vertex_distance: Option<VertexDistanceResult>,
-    /// When `hausdorff` was asked.
+    /// When `hausdorff` was asked (boxed: it is the largest result and rarely asked, so a frame
+    /// without it stays small; a report holds one frame per pair and frame).
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub hausdorff: Option<HausdorffResult>,
+    pub hausdorff: Option<Box<HausdorffResult>>,
     /// When `cmmr` was asked: the sum over the vertices of each body of the squared distance to the
     /// other filled body (compensated sum of exactly chosen terms).
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -593,7 +594,7 @@ fn pair_lines(p: &PairReport) -> Vec<(String, String)> {
     }
     let by_hausdorff = frames
         .iter()
-        .filter_map(|f| f.hausdorff.map(|h| (f, h)))
+        .filter_map(|f| f.hausdorff.as_deref().map(|h| (f, h)))
         .max_by(|x, y| x.1.distance.total_cmp(&y.1.distance));
     if let Some((f, h)) = by_hausdorff {
         let d = if h.direction == "a_to_b" {

@@ -2,7 +2,11 @@
 //!
 //! # The plan
 //! [`plan`] merges the queries into one [`PairJob`] per unordered pair (the union of the effects of
-//! every query naming it), so a pair named twice is computed once. A job's per-frame effects
+//! every query naming it), so a pair named twice is computed once. A **streamed** query (all pairs,
+//! `within`, no `first_contact`) gets no jobs ([`Plan::streamed`]): each frame evaluates only the
+//! broad phase's candidate pairs without a job (static–static pairs at the first frame only), and
+//! keeps only the frames within the threshold; its memory is `O(bodies + candidates of a frame +
+//! reported results)`, bounded at run time by [`MAX_FRAME_CANDIDATES`] and [`MAX_PAIR_FRAMES`]. A job's per-frame effects
 //! (`distance`, `closest_points`, `vertex_distance`) run at every frame if either body moves and
 //! once if neither does; `first_contact` runs once per job over the whole span. Bodies are posed only
 //! when a job needs them at that time; a static body is posed once.
@@ -1037,7 +1041,7 @@ pub(crate) fn eval_frame<K: Kernel>(
                     .map(|f| caller_feature::<K>(to, to_pose, f, d.point).into()),
             }
         };
-        out.hausdorff = Some(HausdorffResult {
+        out.hausdorff = Some(Box::new(HausdorffResult {
             distance: h.distance,
             squared_distance: h.squared_distance,
             direction: match h.direction {
@@ -1046,7 +1050,7 @@ pub(crate) fn eval_frame<K: Kernel>(
             },
             a_to_b: directed(poly_a, poly_b, pb.pose, h.p_to_q),
             b_to_a: directed(poly_b, poly_a, pa.pose, h.q_to_p),
-        });
+        }));
     }
     if ask.effects.contains(Effect::Cmmr) {
         out.cmmr =
