@@ -157,16 +157,18 @@ pub fn plan(scene: &Scene) -> Plan {
         .iter()
         .any(|q| matches!(q.pairs, PairSet::All) && !q.is_streamed());
     let is_streamed = |q: &crate::load::Query| !materialize_all && q.is_streamed();
-    let mut index: HashMap<(usize, usize), usize> = HashMap::new();
+    let mut index = PairIndex::new(n, materialize_all);
     let mut jobs: Vec<PairJob> = Vec::new();
     for (k, q) in scene.queries.iter().enumerate() {
         if is_streamed(q) {
             continue;
         }
         let all = matches!(q.pairs, PairSet::All);
+        if all {
+            jobs.reserve(PairSet::All.count(n).try_into().unwrap_or(0));
+        }
         for (pos, (a, b)) in q.pairs.iter(n).enumerate() {
-            let key = (a.min(b), a.max(b));
-            let j = *index.entry(key).or_insert_with(|| {
+            let j = index.get_or_insert(a, b, || {
                 jobs.push(PairJob {
                     a,
                     b,
@@ -226,6 +228,49 @@ pub fn plan(scene: &Scene) -> Plan {
         jobs.sort_by_key(|j| j.first);
     }
     Plan { jobs, streamed }
+}
+
+/// The job of each pair while planning: a dense table (4 bytes per pair, no hashing) when every
+/// pair gets a job anyway, else a hash map of the named pairs.
+enum PairIndex {
+    Dense { n: usize, slots: Vec<u32> },
+    Sparse(HashMap<(usize, usize), usize>),
+}
+
+impl PairIndex {
+    fn new(n: usize, every_pair: bool) -> PairIndex {
+        let pairs = PairSet::All.count(n);
+        // u32 slots: MAX_PAIRS (10^7) fits; beyond, the validation refused the scene anyway.
+        match usize::try_from(pairs) {
+            Ok(len) if every_pair && pairs < u128::from(u32::MAX) => PairIndex::Dense {
+                n,
+                slots: vec![u32::MAX; len],
+            },
+            _ => PairIndex::Sparse(HashMap::new()),
+        }
+    }
+
+    /// The job index of the pair `{a, b}`, made by `make` (which returns the new index) when new.
+    fn get_or_insert(&mut self, a: usize, b: usize, make: impl FnOnce() -> usize) -> usize {
+        let (lo, hi) = (a.min(b), a.max(b));
+        match self {
+            PairIndex::Dense { n, slots } => {
+                // Rank of (lo, hi) in the order (0, 1), (0, 2), …, (1, 2), …
+                let rank = lo * *n - lo * (lo + 1) / 2 + (hi - lo - 1);
+                match slots.get_mut(rank) {
+                    Some(slot) if *slot != u32::MAX => *slot as usize,
+                    Some(slot) => {
+                        let j = make();
+                        *slot = u32::try_from(j).unwrap_or(u32::MAX);
+                        j
+                    }
+                    // Not reached for a pair of distinct bodies below n.
+                    None => make(),
+                }
+            }
+            PairIndex::Sparse(map) => *map.entry((lo, hi)).or_insert_with(make),
+        }
+    }
 }
 
 /// How to run a scene.

@@ -417,3 +417,43 @@ fn the_candidate_limit_stops_a_streamed_query_with_an_error() {
     let json = serde_json::to_value(&full).unwrap();
     assert!(json.get("errors").is_none());
 }
+
+#[test]
+fn an_all_pairs_query_without_within_plans_the_same_jobs_as_its_list() {
+    // The dense pair table of a materialized all-pairs query against the hash map of a list.
+    let mut s = String::new();
+    for k in 0..25 {
+        s += &format!(
+            "[[body]]\nid = \"b{k}\"\ngenerator = {{ type = \"regular\", n = 4, radius = 0.5 }}\npose = {{ x = {}, y = {} }}\n",
+            2 * (k % 5),
+            2 * (k / 5)
+        );
+    }
+    s += "[[query]]\nname = \"first\"\npairs = [[\"b9\", \"b1\"], [\"b3\", \"b4\"], [\"b9\", \"b1\"]]\neffects = [\"vertex_distance\"]\n";
+    s += "[[query]]\nname = \"all\"\npairs = \"all\"\neffects = [\"distance\"]\n";
+    s += "[[query]]\nname = \"near\"\npairs = \"all\"\neffects = [\"closest_points\"]\nwithin = 1.0\n";
+    let scene = load_str(&s, &Origin::text("dense.toml")).unwrap();
+    let mut list = scene.clone();
+    list.queries[1].pairs = PairSet::List(PairSet::All.iter(25).collect());
+    let (p, q) = (plan(&scene), plan(&list));
+    // The non-streamed all-pairs query materializes every pair: "near" is merged into the jobs
+    // (with the list, "near" is streamed but every pair has a job, so it merges the same way).
+    assert!(p.streamed.is_none() && q.streamed.is_some());
+    assert_eq!(p.jobs.len(), 300);
+    let view = |p: &polydist_scene::Plan| {
+        p.jobs
+            .iter()
+            .map(|j| (j.a, j.b, j.queries.clone(), j.effects, j.within))
+            .collect::<Vec<_>>()
+    };
+    assert_eq!(view(&p), view(&q));
+    assert_eq!((p.jobs[0].a, p.jobs[0].b), (9, 1));
+    assert_eq!(p.jobs[0].queries, vec![0, 1, 2]);
+    assert_eq!((p.jobs[1].a, p.jobs[1].b), (3, 4));
+    assert_eq!((p.jobs[2].a, p.jobs[2].b), (0, 1));
+    assert_eq!(p.jobs[2].within, None);
+    let a = run(&scene, &opts(true, 2));
+    let b = run(&list, &opts(true, 1));
+    assert_eq!(a.pairs, b.pairs);
+    assert_eq!(a.pairs.len(), 300);
+}
