@@ -16,7 +16,8 @@
 //!   20,000 / time).
 //!
 //! Predicate counting is off. Run:
-//! `cargo bench -p polydist-benches --bench scene -- --warm-up-time 1 --measurement-time 5`.
+//! `cargo bench -p polydist-benches --bench scene -- --warm-up-time 1 --measurement-time 2`.
+//! The figures are in docs/scene-format.md ("Benchmarks").
 //! Figures only; nothing is asserted beyond the sanity checks before timing.
 
 use std::hint::black_box;

@@ -263,4 +263,64 @@ mod tests {
             assert_eq!(stats.candidates, got.len() as u64);
         }
     }
+
+    #[test]
+    fn the_axis_follows_the_spread_and_classes_filter_pairs() {
+        // A vertical line: swept on y, each box examines its neighbour only.
+        let column: Vec<Option<Aabb>> = (0..50).map(|k| sq(0.0, 2.0 * f64::from(k), 1.5)).collect();
+        assert_eq!(sweep_axis(&column), 1);
+        let (pairs, stats) = sweep_and_prune(&column, 0.6);
+        assert_eq!(pairs, all_pairs_not_farther(&column, 0.6));
+        assert_eq!((stats.examined, stats.candidates), (49, 49));
+        let row: Vec<Option<Aabb>> = column
+            .iter()
+            .map(|b| {
+                b.map(|b| Aabb {
+                    min: DVec2::new(b.min.y, b.min.x),
+                    max: DVec2::new(b.max.y, b.max.x),
+                })
+            })
+            .collect();
+        assert_eq!(sweep_axis(&row), 0);
+
+        // Pseudo-random boxes in two classes: each wanted pair once, no other.
+        let mut x = 7u64;
+        let mut next = || {
+            x = x
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
+            (x >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let boxes: Vec<Option<Aabb>> = (0..120)
+            .map(|k| {
+                if k % 17 == 0 {
+                    None
+                } else {
+                    sq(20.0 * next(), 60.0 * next(), 2.0 * next())
+                }
+            })
+            .collect();
+        let class = |i: usize| usize::from(i % 3 == 0);
+        for within in [[true, true], [true, false], [false, false], [false, true]] {
+            for r in [0.0, 0.5, 3.0] {
+                let mut got = Vec::new();
+                let (stats, stopped) = sweep_classes(&boxes, class, within, r, |i, j| {
+                    got.push((i, j));
+                    true
+                });
+                assert!(!stopped);
+                got.sort_unstable();
+                let want: Vec<(usize, usize)> = all_pairs_not_farther(&boxes, r)
+                    .into_iter()
+                    .filter(|&(i, j)| class(i) != class(j) || within[class(i)])
+                    .collect();
+                assert_eq!(got, want, "{within:?} {r}");
+                assert_eq!(stats.candidates, want.len() as u64);
+            }
+        }
+        // Stopping at the first refusal.
+        let (stats, stopped) = sweep_classes(&boxes, |_| 0, [true, true], 3.0, |_, _| false);
+        assert!(stopped);
+        assert_eq!(stats.candidates, 1);
+    }
 }
