@@ -10,7 +10,8 @@
 //! ```
 //!
 //! Exit status: 0 when everything was computed, 1 when some pair failed (all pairs are still
-//! reported), 2 when the scene is invalid or cannot be read.
+//! reported) or a streamed query (all pairs within `r`) stopped at a run-time limit (the report's
+//! `errors`, also printed on stderr), 2 when the scene is invalid or cannot be read.
 
 use std::fs::File;
 use std::io::{BufRead, BufReader, BufWriter, IsTerminal as _, Write as _};
@@ -388,7 +389,12 @@ fn run_command(
     };
     let printed = print(&text);
     if report.failed {
-        eprintln!("polydist: some pairs failed (see the report)");
+        for e in &report.errors {
+            eprintln!("polydist: {e}");
+        }
+        if report.pairs.iter().any(|p| p.failed) || report.errors.is_empty() {
+            eprintln!("polydist: some pairs failed (see the report)");
+        }
         return ExitCode::from(1);
     }
     printed
