@@ -457,3 +457,79 @@ fn an_all_pairs_query_without_within_plans_the_same_jobs_as_its_list() {
     assert_eq!(a.pairs, b.pairs);
     assert_eq!(a.pairs.len(), 300);
 }
+
+#[test]
+fn bodies_that_cannot_be_posed_give_invalid_frames_once_per_pair() {
+    // x = 1e150·t leaves the coordinate range ±2^500 ≈ 3.3e150 after t = 3: both runaways have no
+    // box at t = 4, 5, 6, so their pairs are added to the candidates (the pair of the two once).
+    let sq = |x: f64, y: f64| {
+        format!(
+            "[[{x}, {y}], [{}, {y}], [{}, {}], [{x}, {}]]",
+            x + 1.0,
+            x + 1.0,
+            y + 1.0,
+            y + 1.0
+        )
+    };
+    let text = format!(
+        r#"
+        time = {{ end = 6.0, step = 1.0 }}
+        [[body]]
+        id = "runaway"
+        vertices = {}
+        motion = {{ type = "linear", velocity = [1e150, 0.0] }}
+        [[body]]
+        id = "b"
+        vertices = {}
+        [[body]]
+        id = "c"
+        vertices = {}
+        [[body]]
+        id = "other"
+        vertices = {}
+        motion = {{ type = "linear", velocity = [0.0, 1e150] }}
+        [[query]]
+        name = "near"
+        pairs = "all"
+        effects = ["distance"]
+        within = 4.5
+        "#,
+        sq(0.0, 0.0),
+        sq(0.0, 5.0),
+        sq(5.0, 5.0),
+        sq(9.0, 9.0),
+    );
+    let scene = load_str(&text, &Origin::text("runaway.toml")).unwrap();
+    assert!(plan(&scene).jobs.is_empty());
+    let list = listed(&scene);
+    for broad in [true, false] {
+        let report = run(&scene, &opts(broad, 2));
+        let twin = run(&list, &opts(broad, 1));
+        assert_eq!(report.pairs, twin.pairs, "broad phase {broad}");
+        assert_eq!(comparable(&report.costs), comparable(&twin.costs));
+        assert!(report.failed && report.errors.is_empty());
+        let pair = |a: &str, b: &str| {
+            report
+                .pairs
+                .iter()
+                .find(|p| p.a == a && p.b == b)
+                .unwrap_or_else(|| panic!("{a} – {b}"))
+        };
+        for (a, b) in [("runaway", "b"), ("runaway", "other"), ("b", "other")] {
+            let p = pair(a, b);
+            assert!(p.failed);
+            let invalid: Vec<f64> = p
+                .frames
+                .iter()
+                .filter(|f| f.status == Some(Status::Invalid))
+                .map(|f| f.t)
+                .collect();
+            assert_eq!(invalid, vec![4.0, 5.0, 6.0], "{a} – {b}");
+        }
+        // b and c are static and 4 apart: within, once.
+        let bc = pair("b", "c");
+        assert!(!bc.failed && !bc.moving);
+        assert_eq!(bc.frames.len(), 1);
+        assert_eq!(bc.frames[0].distance, Some(4.0));
+    }
+}
