@@ -10,7 +10,8 @@
 //! ```
 //!
 //! Exit status: 0 when everything was computed, 1 when some pair failed (all pairs are still
-//! reported), 2 when the scene is invalid or cannot be read.
+//! reported) or a streamed query (all pairs within `r`) stopped at a run-time limit (the report's
+//! `errors`, also printed on stderr), 2 when the scene is invalid or cannot be read.
 
 use std::fs::File;
 use std::io::{BufRead, BufReader, BufWriter, IsTerminal as _, Write as _};
@@ -165,6 +166,7 @@ fn main() -> ExitCode {
                 count_predicates: !no_count,
                 broad_phase: !no_broad_phase,
                 threads,
+                ..RunOptions::default()
             },
         ),
         Some(Command::Check { scene }) => check_command(&scene),
@@ -387,7 +389,12 @@ fn run_command(
     };
     let printed = print(&text);
     if report.failed {
-        eprintln!("polydist: some pairs failed (see the report)");
+        for e in &report.errors {
+            eprintln!("polydist: {e}");
+        }
+        if report.pairs.iter().any(|p| p.failed) || report.errors.is_empty() {
+            eprintln!("polydist: some pairs failed (see the report)");
+        }
         return ExitCode::from(1);
     }
     printed
@@ -406,15 +413,25 @@ fn check_command(path: &PathBuf) -> ExitCode {
                 .iter()
                 .filter(|b| !b.motion.is_static())
                 .count();
-            let jobs = plan(&scene).jobs;
+            let plan = plan(&scene);
+            let n = scene.bodies.len() as u64;
+            // A streamed query (all pairs within r) names every pair without a job.
+            let pairs = if plan.streamed.is_some() {
+                format!(
+                    "{} pairs ({} planned as jobs, the others streamed from the broad phase frame by frame)",
+                    n * n.saturating_sub(1) / 2,
+                    plan.jobs.len()
+                )
+            } else {
+                format!("{} pairs", plan.jobs.len())
+            };
             print(&format!(
-                "{}: ok: scene '{}', {} bodies ({convex} convex, {} simple, {moving} moving), {} queries, {} pairs, {} frames, kernel {}\n",
+                "{}: ok: scene '{}', {} bodies ({convex} convex, {} simple, {moving} moving), {} queries, {pairs}, {} frames, kernel {}\n",
                 path.display(),
                 scene.name,
                 scene.bodies.len(),
                 scene.bodies.len() - convex,
                 scene.queries.len(),
-                jobs.len(),
                 scene.time.frames,
                 scene.kernel.name()
             ))

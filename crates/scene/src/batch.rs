@@ -17,12 +17,12 @@ use rayon::prelude::*;
 use serde::Deserialize;
 use serde_json::{Map, Value};
 
-use crate::broad::{Aabb, sweep_pairs};
+use crate::broad::{Aabb, sweep_classes};
 use crate::generate::MAX_VERTICES;
-use crate::load::{Body, ContactParams, Shape};
+use crate::load::{Body, Shape};
 use crate::motion::Motion;
 use crate::report::{Costs, FrameResult, Status};
-use crate::run::{Meter, PairJob, Posed, eval_frame, pose_body};
+use crate::run::{Ask, Meter, Posed, eval_frame, pose_body};
 use crate::spec::{Effect, EffectSet, KernelChoice};
 
 /// The longest input line, in bytes (a longer line gets an error line and is skipped).
@@ -178,24 +178,13 @@ fn evaluate<K: Kernel>(
     effects: EffectSet,
     within: Option<f64>,
 ) -> Result<FrameResult, String> {
-    let job = PairJob {
-        a: 0,
-        b: 1,
-        queries: Vec::new(),
-        effects,
-        contact: ContactParams {
-            tolerance: 0.0,
-            max_steps: 1,
-        },
-        moving: false,
-        within,
-    };
+    let ask = Ask { effects, within };
     let (ba, pa) = at_rest("a", a)?;
     let (bb, pb) = at_rest("b", b)?;
     let meter = Meter { count: false };
     let mut costs = Costs::default();
     Ok(eval_frame::<K>(
-        &job,
+        ask,
         0.0,
         (&ba, &pa),
         (&bb, &pb),
@@ -425,8 +414,9 @@ pub fn read_layer<R: BufRead>(
 /// I/O errors of `output`.
 ///
 /// # Complexity
-/// `O(N log N + k)` for the broad phase (`N = |a| + |b|`, `k` box pairs whose `x`-intervals come
-/// within `r`, same-layer pairs included), plus `O(log n + log m)` per candidate pair.
+/// `O(N log N + k)` for the broad phase (`N = |a| + |b|`, `k` pairs of one polygon of each layer
+/// whose intervals on the sweep axis come within `r`; same-layer pairs are never walked), plus
+/// `O(log n + log m)` per candidate pair.
 pub fn batch_within<W: Write>(
     a: &[LayerPolygon],
     b: &[LayerPolygon],
@@ -444,7 +434,19 @@ pub fn batch_within<W: Write>(
         .map(|p| Aabb::of(p.poly.vertices()))
         .collect();
     let na = a.len();
-    let (candidates, _) = sweep_pairs(&boxes, r, |i, j| (i < na) != (j < na));
+    let mut candidates = Vec::new();
+    // Two classes, the layers: only pairs across them are walked.
+    let _ = sweep_classes(
+        &boxes,
+        |i| usize::from(i >= na),
+        [false, false],
+        r,
+        |i, j| {
+            candidates.push((i, j));
+            true
+        },
+    );
+    candidates.sort_unstable();
     let mut effects = EffectSet::EMPTY;
     effects.insert(Effect::Distance);
     effects.insert(Effect::ClosestPoints);

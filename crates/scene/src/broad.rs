@@ -13,10 +13,12 @@
 //! without `within` need their value for every pair, and `first_contact` needs the distance at
 //! every advancement step.
 //!
-//! [`sweep_and_prune`] sorts the boxes by their lower `x` and scans, for each box, the boxes that
-//! start before its upper `x` plus `r`: `O(n log n + k)` for `n` boxes and `k` pairs whose
-//! `x`-intervals come within `r` (Baraff 1992, "Dynamic simulation of non-penetrating rigid
-//! bodies", §6.4; Cohen, Lin, Manocha, Ponamgi, I-COLLIDE, 1995, §4.2).
+//! [`sweep_and_prune`] picks the axis along which the box centres spread most, sorts the boxes by
+//! their lower coordinate on it and scans, for each box, the boxes that start before its upper
+//! coordinate plus `r`: `O(n log n + k)` for `n` boxes and `k` pairs whose intervals on that axis
+//! come within `r` (Baraff 1992, "Dynamic simulation of non-penetrating rigid bodies", §6.4;
+//! Cohen, Lin, Manocha, Ponamgi, I-COLLIDE, 1995, §4.2). The runner sweeps static and moving
+//! boxes as two classes, so that after the first frame the static–static pairs are never walked.
 
 use glam::DVec2;
 
@@ -85,59 +87,120 @@ impl Aabb {
 /// What [`sweep_and_prune`] did.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct SweepStats {
-    /// Pairs whose `x`-intervals came within `r` (examined with the full box test).
+    /// Pairs whose intervals on the sweep axis came within `r` (examined with the full box test).
     pub examined: u64,
     /// Pairs returned.
     pub candidates: u64,
 }
 
+/// The sweep axis: `1` (`y`) when the centres of the present boxes spread more along `y` than
+/// along `x` (their variance), else `0` (`x`). A choice of cost only: every axis gives the same
+/// pairs. Rounded sums are fine here (no answer depends on them); a non-finite variance picks `x`.
+///
+/// # Complexity
+/// `O(n)`.
+pub(crate) fn sweep_axis(boxes: &[Option<Aabb>]) -> usize {
+    let centres = || boxes.iter().flatten().map(|b| (b.min + b.max) * 0.5);
+    let count = centres().count();
+    if count < 2 {
+        return 0;
+    }
+    let mean = centres().fold(DVec2::ZERO, |acc, c| acc + c) / count as f64;
+    let var = centres().fold(DVec2::ZERO, |acc, c| acc + (c - mean) * (c - mean));
+    usize::from(var.y > var.x)
+}
+
 /// Every pair `(i, j)`, `i < j`, of present boxes that is **not** [certainly
 /// farther](Aabb::certainly_farther) than `r`, sorted.
 ///
-/// Sweep-and-prune on `x` (Baraff 1992 §6.4; Cohen et al., I-COLLIDE 1995 §4.2): the boxes sorted
-/// by `min.x`; for each, the following boxes until one starts certainly more than `r` beyond its
-/// `max.x` (all later ones do too). Absent boxes (`None`) take part in no pair.
+/// Sweep-and-prune (Baraff 1992 §6.4; Cohen et al., I-COLLIDE 1995 §4.2) on the axis along which
+/// the box centres spread most (their variance; bodies along a vertical line are swept on `y`):
+/// the boxes sorted by their lower coordinate on that axis; for each, the following boxes until
+/// one starts certainly more than `r` beyond its upper coordinate (all later ones do too). Absent
+/// boxes (`None`) take part in no pair.
 ///
 /// # Complexity
-/// `O(n log n + k)` for `n` boxes and `k` pairs whose `x`-intervals come within `r` (those are
-/// counted in [`SweepStats::examined`]).
+/// `O(n log n + k)` for `n` boxes and `k` pairs whose intervals on the sweep axis come within `r`
+/// (those are counted in [`SweepStats::examined`]).
 #[must_use]
 pub fn sweep_and_prune(boxes: &[Option<Aabb>], r: f64) -> (Vec<(usize, usize)>, SweepStats) {
-    sweep_pairs(boxes, r, |_, _| true)
+    let mut out = Vec::new();
+    let (stats, _) = sweep_classes(
+        boxes,
+        |_| 0,
+        [true, true],
+        r,
+        |i, j| {
+            out.push((i, j));
+            true
+        },
+    );
+    out.sort_unstable();
+    (out, stats)
 }
 
-/// [`sweep_and_prune`] restricted to the pairs `accept` takes (the two layers of a batch): the
-/// others are passed over by the sweep without the box test.
-pub(crate) fn sweep_pairs(
+/// The sweep of [`sweep_and_prune`] over boxes of two classes (`class(i)` is `0` or `1`): the
+/// pairs of different classes, and the pairs within class `c` when `within_class[c]`; the other
+/// pairs are never walked (each class is sorted apart, and a box scans the other class from its
+/// own position, found by binary search). `emit(i, j)` (`i < j`) receives each pair not certainly
+/// farther than `r`, in no particular order, and returns whether to go on: the sweep stops at the
+/// first `false`, returning `true` (truncated).
+///
+/// Each pair is scanned once, from the box that comes first in the order (lower coordinate, then
+/// index), so the result does not depend on the classes beyond which pairs are wanted.
+///
+/// # Complexity
+/// `O(n log n + k)`, `k` the wanted pairs whose intervals on the sweep axis come within `r`.
+pub(crate) fn sweep_classes(
     boxes: &[Option<Aabb>],
+    class: impl Fn(usize) -> usize,
+    within_class: [bool; 2],
     r: f64,
-    accept: impl Fn(usize, usize) -> bool,
-) -> (Vec<(usize, usize)>, SweepStats) {
-    let mut order: Vec<usize> = (0..boxes.len()).filter(|&i| boxes[i].is_some()).collect();
-    let lo = |i: usize| boxes[i].map_or(0.0, |b| b.min.x);
-    order.sort_by(|&i, &j| lo(i).total_cmp(&lo(j)).then(i.cmp(&j)));
+    mut emit: impl FnMut(usize, usize) -> bool,
+) -> (SweepStats, bool) {
+    let axis = sweep_axis(boxes);
+    let lo = |i: usize| boxes[i].map_or(0.0, |b| b.min[axis]);
+    let order = |i: usize, j: usize| lo(i).total_cmp(&lo(j)).then(i.cmp(&j));
+    let mut lists: [Vec<usize>; 2] = [Vec::new(), Vec::new()];
+    for (i, b) in boxes.iter().enumerate() {
+        if b.is_some() {
+            lists[class(i).min(1)].push(i);
+        }
+    }
+    for list in &mut lists {
+        list.sort_by(|&i, &j| order(i, j));
+    }
     let mut stats = SweepStats::default();
-    let mut out = Vec::new();
     let finite = r >= 0.0 && r.is_finite();
-    for (s, &i) in order.iter().enumerate() {
-        let Some(bi) = boxes[i] else { continue };
-        for &j in &order[s + 1..] {
-            let Some(bj) = boxes[j] else { continue };
-            if finite && gap_down(bj.min.x, bi.max.x) > r {
-                break;
-            }
-            if !accept(i, j) {
-                continue;
-            }
-            stats.examined += 1;
-            if !bi.certainly_farther(&bj, r) {
-                out.push((i.min(j), i.max(j)));
+    for c in 0..2 {
+        for (p, &i) in lists[c].iter().enumerate() {
+            let Some(bi) = boxes[i] else { continue };
+            for (d, list) in lists.iter().enumerate() {
+                if d == c && !within_class[c] {
+                    continue;
+                }
+                let start = if d == c {
+                    p + 1
+                } else {
+                    list.partition_point(|&j| order(j, i).is_lt())
+                };
+                for &j in &list[start..] {
+                    let Some(bj) = boxes[j] else { continue };
+                    if finite && gap_down(bj.min[axis], bi.max[axis]) > r {
+                        break;
+                    }
+                    stats.examined += 1;
+                    if !bi.certainly_farther(&bj, r) {
+                        stats.candidates += 1;
+                        if !emit(i.min(j), i.max(j)) {
+                            return (stats, true);
+                        }
+                    }
+                }
             }
         }
     }
-    out.sort_unstable();
-    stats.candidates = out.len() as u64;
-    (out, stats)
+    (stats, false)
 }
 
 /// The brute-force twin of [`sweep_and_prune`]: every pair tested. `O(n²)`; a test reference.
@@ -199,5 +262,65 @@ mod tests {
             assert_eq!(got, all_pairs_not_farther(&boxes, r), "r = {r}");
             assert_eq!(stats.candidates, got.len() as u64);
         }
+    }
+
+    #[test]
+    fn the_axis_follows_the_spread_and_classes_filter_pairs() {
+        // A vertical line: swept on y, each box examines its neighbour only.
+        let column: Vec<Option<Aabb>> = (0..50).map(|k| sq(0.0, 2.0 * f64::from(k), 1.5)).collect();
+        assert_eq!(sweep_axis(&column), 1);
+        let (pairs, stats) = sweep_and_prune(&column, 0.6);
+        assert_eq!(pairs, all_pairs_not_farther(&column, 0.6));
+        assert_eq!((stats.examined, stats.candidates), (49, 49));
+        let row: Vec<Option<Aabb>> = column
+            .iter()
+            .map(|b| {
+                b.map(|b| Aabb {
+                    min: DVec2::new(b.min.y, b.min.x),
+                    max: DVec2::new(b.max.y, b.max.x),
+                })
+            })
+            .collect();
+        assert_eq!(sweep_axis(&row), 0);
+
+        // Pseudo-random boxes in two classes: each wanted pair once, no other.
+        let mut x = 7u64;
+        let mut next = || {
+            x = x
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
+            (x >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let boxes: Vec<Option<Aabb>> = (0..120)
+            .map(|k| {
+                if k % 17 == 0 {
+                    None
+                } else {
+                    sq(20.0 * next(), 60.0 * next(), 2.0 * next())
+                }
+            })
+            .collect();
+        let class = |i: usize| usize::from(i % 3 == 0);
+        for within in [[true, true], [true, false], [false, false], [false, true]] {
+            for r in [0.0, 0.5, 3.0] {
+                let mut got = Vec::new();
+                let (stats, stopped) = sweep_classes(&boxes, class, within, r, |i, j| {
+                    got.push((i, j));
+                    true
+                });
+                assert!(!stopped);
+                got.sort_unstable();
+                let want: Vec<(usize, usize)> = all_pairs_not_farther(&boxes, r)
+                    .into_iter()
+                    .filter(|&(i, j)| class(i) != class(j) || within[class(i)])
+                    .collect();
+                assert_eq!(got, want, "{within:?} {r}");
+                assert_eq!(stats.candidates, want.len() as u64);
+            }
+        }
+        // Stopping at the first refusal.
+        let (stats, stopped) = sweep_classes(&boxes, |_| 0, [true, true], 3.0, |_, _| false);
+        assert!(stopped);
+        assert_eq!(stats.candidates, 1);
     }
 }

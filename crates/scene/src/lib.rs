@@ -11,14 +11,17 @@
 //!   bad time spans, limits): [`load_str`], [`load_file`], [`validate`];
 //! - poses bodies ([`Motion::pose_at`]) and bounds the relative speed of any boundary point of a
 //!   pair over an interval ([`relative_speed_bound`], Schwartz 1981 §1 with its erratum);
-//! - plans ([`plan`]: one job per pair, effects merged, static pairs once) and runs ([`run`]):
+//! - plans ([`plan`]: one job per pair, effects merged, static pairs once; an all-pairs query with
+//!   `within` is streamed, never one job per pair) and runs ([`run`]):
 //!   `distance` and `closest_points` share one convex distance query (Yang 2006, `O(log n + log m)`,
 //!   with temporal coherence), `vertex_distance` is McKenna–Toussaint (`O(n + m)`), `first_contact`
 //!   is conservative advancement (Schwartz 1981) with a bracket confirmed by the exact intersection
 //!   test or a certified clearance, `hausdorff` and `cmmr` are Atallah–Ribeiro–Lifschitz (`O(n + m)`);
 //!   the [`Report`] says what each effect computed and what it cost;
 //! - answers queries with `within` over many bodies through a broad phase ([`sweep_and_prune`] with a
-//!   certified box gap) and evaluates pairs in parallel (rayon), with results independent of both;
+//!   certified box gap, on the axis of larger spread): an all-pairs query with `within` evaluates
+//!   only each frame's candidate pairs, in memory `O(bodies + candidates + results)`; pairs are
+//!   evaluated in parallel (rayon), with results independent of both;
 //! - answers pairs of polygons as JSON lines ([`batch_pairs`], [`batch_within`]; docs/batch.md);
 //! - draws a run as SVG ([`render_svg`]).
 //!
@@ -72,15 +75,15 @@ pub use error::{SceneError, SceneErrors};
 pub use generate::MAX_VERTICES;
 pub use load::{
     Body, ContactParams, DEFAULT_MAX_STEPS, DEFAULT_RELATIVE_TOLERANCE, FRAME_SLACK, MAX_BODIES,
-    MAX_FILE_BYTES, MAX_FRAMES, MAX_PAIR_FRAMES, MAX_PAIRS, Origin, Query, Scene, Shape, TimeSpan,
-    load_file, load_str, parse_polygon_file, parse_spec, validate,
+    MAX_FILE_BYTES, MAX_FRAME_CANDIDATES, MAX_FRAMES, MAX_PAIR_FRAMES, MAX_PAIRS, Origin, PairSet,
+    Query, Scene, Shape, TimeSpan, load_file, load_str, parse_polygon_file, parse_spec, validate,
 };
 pub use motion::{Keyframe, Motion, relative_speed_bound};
 pub use report::{
     ClosestPoints, ContactOutcome, ContactResult, Cost, Costs, FeatureRef, FrameResult, PairReport,
     REPORT_VERSION, Report, Status, TimeReport, VertexDistanceResult,
 };
-pub use run::{PairJob, Plan, RunOptions, plan, run, run_with_progress};
+pub use run::{PairJob, Plan, RunOptions, Streamed, plan, run, run_with_progress};
 pub use spec::{
     BodySpec, Effect, EffectSet, GeneratorSpec, KernelChoice, KeyframeSpec, KindSpec, MotionSpec,
     PairsSpec, PoseSpec, QuerySpec, SceneSpec, TimeSpec,

@@ -18,10 +18,18 @@ use crate::spec::{
 pub const MAX_BODIES: usize = 100_000;
 /// The most frames a time span may have.
 pub const MAX_FRAMES: u64 = 1_000_000;
-/// The most distinct pairs over all queries.
+/// The most pairs named over all queries (a streamed query, [`Query::is_streamed`], names none:
+/// its candidates are bounded at run time by [`MAX_FRAME_CANDIDATES`]).
 pub const MAX_PAIRS: u128 = 10_000_000;
-/// The most pair-frame evaluations (moving pairs with per-frame effects × frames).
+/// The most pair-frame evaluations (pairs with per-frame effects × frames; a streamed query counts
+/// its bodies × frames at load, and its candidate pair-frames at run time).
 pub const MAX_PAIR_FRAMES: u128 = 100_000_000;
+/// The most candidate pairs of streamed queries in one frame (pairs the broad phase cannot
+/// certify beyond `within`, or every pair without the broad phase). A run reaching it stops the
+/// streamed queries there, with an error in the report ([`Report::errors`](crate::Report::errors)),
+/// before storing the candidates; so does a run whose candidate pair-frames would exceed
+/// [`MAX_PAIR_FRAMES`].
+pub const MAX_FRAME_CANDIDATES: u64 = 10_000_000;
 /// The largest polygon file read, in bytes (64 MiB).
 pub const MAX_FILE_BYTES: u64 = 64 << 20;
 /// `first_contact`'s default bracket width, relative to the span `end − start`.
@@ -113,8 +121,9 @@ pub struct ContactParams {
 pub struct Query {
     /// The name.
     pub name: String,
-    /// Pairs of body indices (distinct; `a` as listed first).
-    pub pairs: Vec<(usize, usize)>,
+    /// The pairs it names: every unordered pair of distinct bodies, or a list (never expanded for
+    /// `all`: a scene of `n` bodies has `n(n − 1)/2` pairs).
+    pub pairs: PairSet,
     /// The effects.
     pub effects: EffectSet,
     /// `first_contact`'s parameters.
@@ -122,6 +131,62 @@ pub struct Query {
     /// The distance threshold of the per-frame effects (`None`: every pair; see
     /// [`QuerySpec::within`](crate::QuerySpec::within)).
     pub within: Option<f64>,
+}
+
+/// The pairs a query names.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum PairSet {
+    /// Every unordered pair `(a, b)`, `a < b`, of distinct bodies (`pairs = "all"`), in the order
+    /// `(0, 1), (0, 2), …, (1, 2), …`.
+    All,
+    /// Listed pairs of body indices (distinct bodies; `a` as listed first), in the order listed.
+    List(Vec<(usize, usize)>),
+}
+
+impl PairSet {
+    /// The number of pairs named (with repetitions for a list) among `bodies` bodies.
+    ///
+    /// # Complexity
+    /// `O(1)`.
+    #[must_use]
+    pub fn count(&self, bodies: usize) -> u128 {
+        match self {
+            PairSet::All => {
+                let n = bodies as u128;
+                n * n.saturating_sub(1) / 2
+            }
+            PairSet::List(list) => list.len() as u128,
+        }
+    }
+
+    /// The pairs, in order: `O(1)` each (an `all` set is generated, never stored).
+    ///
+    /// # Complexity
+    /// `O(1)` per pair.
+    pub fn iter(&self, bodies: usize) -> impl Iterator<Item = (usize, usize)> + '_ {
+        let list = match self {
+            PairSet::All => None,
+            PairSet::List(list) => Some(list.iter().copied()),
+        };
+        let all = list
+            .is_none()
+            .then(|| (0..bodies).flat_map(move |a| (a + 1..bodies).map(move |b| (a, b))));
+        list.into_iter().flatten().chain(all.into_iter().flatten())
+    }
+}
+
+impl Query {
+    /// Whether the query is **streamed**: all pairs, with a `within` threshold, without
+    /// `first_contact`. Its pairs are never materialized: the runner takes each frame's candidate
+    /// pairs from the broad phase (docs/scene-format.md, "Many bodies").
+    #[must_use]
+    pub fn is_streamed(&self) -> bool {
+        streamed(&self.pairs, self.within, self.effects)
+    }
+}
+
+fn streamed(pairs: &PairSet, within: Option<f64>, effects: EffectSet) -> bool {
+    matches!(pairs, PairSet::All) && within.is_some() && !effects.contains(Effect::FirstContact)
 }
 
 /// The validated time span.
@@ -355,21 +420,54 @@ pub fn validate(spec: &SceneSpec, origin: &Origin) -> Result<Scene, SceneErrors>
                 });
             }
         }
-        let mut pairs = Vec::new();
-        match &q.pairs {
+        let is_convex = |i: usize| {
+            !matches!(
+                bodies.get(i),
+                Some(Some(Body {
+                    shape: Shape::Simple(_),
+                    ..
+                }))
+            )
+        };
+        // Convex-only effects on pairs with a simple body: reported once per query and simple
+        // body (at its first pair), not once per pair of an "all" query.
+        let needs_convex = |errors: &mut Vec<SceneError>, a: usize, b: usize, s: usize| {
+            for e in effects.iter().filter(|e| e.is_available()) {
+                errors.push(SceneError::NeedsConvex {
+                    query: name.clone(),
+                    effect: e.name(),
+                    a: spec.bodies[a].id.clone(),
+                    b: spec.bodies[b].id.clone(),
+                    body: spec.bodies[s].id.clone(),
+                });
+            }
+        };
+        let pairs = match &q.pairs {
             PairsSpec::All => {
-                let n = spec.bodies.len() as u128;
-                pair_count += n * n.saturating_sub(1) / 2;
-                if pair_count <= MAX_PAIRS {
-                    for a in 0..spec.bodies.len() {
-                        for b in a + 1..spec.bodies.len() {
-                            pairs.push((a, b));
-                        }
-                    }
+                let n = spec.bodies.len();
+                // An all-pairs query with `within` (and without `first_contact`) is never expanded
+                // into pairs: the runner takes its candidates from the broad phase, frame by frame
+                // (its work is bounded at run time, `MAX_FRAME_CANDIDATES`).
+                if !streamed(&PairSet::All, q.within.filter(|r| r.is_finite()), effects) {
+                    pair_count += PairSet::All.count(n);
                 }
+                // The first pair of each simple body in the order (0, 1), (0, 2), …: body `a`
+                // names its own pairs first when simple; the first convex `a` names every later
+                // simple body.
+                for a in 0..n.saturating_sub(1) {
+                    if is_convex(a) {
+                        for b in (a + 1..n).filter(|&b| !is_convex(b)) {
+                            needs_convex(&mut errors, a, b, b);
+                        }
+                        break;
+                    }
+                    needs_convex(&mut errors, a, a + 1, a);
+                }
+                PairSet::All
             }
             PairsSpec::List(list) => {
                 pair_count += list.len() as u128;
+                let mut pairs = Vec::with_capacity(list.len());
                 for [a, b] in list {
                     let ia = lookup(&ids, a, &name, &mut errors);
                     let ib = lookup(&ids, b, &name, &mut errors);
@@ -382,33 +480,16 @@ pub fn validate(spec: &SceneSpec, origin: &Origin) -> Result<Scene, SceneErrors>
                         pairs.push((ia, ib));
                     }
                 }
-            }
-        }
-        // Convex-only effects on pairs with a simple body: reported once per query and simple
-        // body (at its first pair), not once per pair of an "all" query.
-        let mut reported = std::collections::HashSet::new();
-        for &(a, b) in &pairs {
-            let simple = [a, b].into_iter().find(|&i| {
-                matches!(
-                    bodies.get(i),
-                    Some(Some(Body {
-                        shape: Shape::Simple(_),
-                        ..
-                    }))
-                )
-            });
-            if let Some(s) = simple.filter(|&s| reported.insert(s)) {
-                for e in effects.iter().filter(|e| e.is_available()) {
-                    errors.push(SceneError::NeedsConvex {
-                        query: name.clone(),
-                        effect: e.name(),
-                        a: spec.bodies[a].id.clone(),
-                        b: spec.bodies[b].id.clone(),
-                        body: spec.bodies[s].id.clone(),
-                    });
+                let mut reported = std::collections::HashSet::new();
+                for &(a, b) in &pairs {
+                    let simple = [a, b].into_iter().find(|&i| !is_convex(i));
+                    if let Some(s) = simple.filter(|&s| reported.insert(s)) {
+                        needs_convex(&mut errors, a, b, s);
+                    }
                 }
+                PairSet::List(pairs)
             }
-        }
+        };
         queries.push(Query {
             name,
             pairs,
@@ -427,14 +508,18 @@ pub fn validate(spec: &SceneSpec, origin: &Origin) -> Result<Scene, SceneErrors>
             limit: MAX_PAIRS,
         });
     } else if let Some(t) = time {
+        // A streamed query poses every body at every frame; its pair-frames are bounded at run time.
+        let n = bodies.len() as u128;
         let per_frame = queries
             .iter()
-            .filter(|q| {
-                q.effects.contains(Effect::Distance)
-                    || q.effects.contains(Effect::ClosestPoints)
-                    || q.effects.contains(Effect::VertexDistance)
+            .filter(|q| q.effects.has_per_frame())
+            .map(|q| {
+                if q.is_streamed() {
+                    n
+                } else {
+                    q.pairs.count(bodies.len())
+                }
             })
-            .map(|q| q.pairs.len() as u128)
             .sum::<u128>();
         let work = per_frame * t.frames as u128;
         if work > MAX_PAIR_FRAMES {
@@ -445,7 +530,10 @@ pub fn validate(spec: &SceneSpec, origin: &Origin) -> Result<Scene, SceneErrors>
             });
         }
     }
-    check_conflicts(&queries, &spec.bodies, &mut errors);
+    if pair_count <= MAX_PAIRS {
+        // Bounded: a query with `first_contact` is never streamed, so its pairs are counted.
+        check_conflicts(&queries, &spec.bodies, &mut errors);
+    }
 
     match (errors.is_empty(), time) {
         (true, Some(time)) => Ok(Scene {
@@ -492,7 +580,7 @@ fn check_conflicts(queries: &[Query], bodies: &[BodySpec], errors: &mut Vec<Scen
         if !q.effects.contains(Effect::FirstContact) {
             continue;
         }
-        for &(a, b) in &q.pairs {
+        for (a, b) in q.pairs.iter(bodies.len()) {
             let key = (a.min(b), a.max(b));
             match seen.get(&key) {
                 Some(&j) if j != k && queries[j].contact != q.contact => {

@@ -30,8 +30,14 @@ pub struct Report {
     pub pairs_beyond: u64,
     /// What each effect computed and what it cost.
     pub costs: Costs,
-    /// `true` when some pair failed (an invalid body at some time, or an undecided `first_contact`).
+    /// `true` when some pair failed (an invalid body at some time, or an undecided `first_contact`),
+    /// or the run stopped a streamed query at a limit (`errors`).
     pub failed: bool,
+    /// Problems of the run as a whole (not of one pair): a streamed query (all pairs with `within`)
+    /// stopped at a run-time limit ([`MAX_FRAME_CANDIDATES`](crate::MAX_FRAME_CANDIDATES),
+    /// [`MAX_PAIR_FRAMES`](crate::MAX_PAIR_FRAMES)), naming the frame. Omitted from JSON when empty.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub errors: Vec<String>,
 }
 
 /// The time span of the run.
@@ -197,9 +203,10 @@ pub struct FrameResult {
     /// When `vertex_distance` was asked.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub vertex_distance: Option<VertexDistanceResult>,
-    /// When `hausdorff` was asked.
+    /// When `hausdorff` was asked (boxed: it is the largest result and rarely asked, so a frame
+    /// without it stays small; a report holds one frame per pair and frame).
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub hausdorff: Option<HausdorffResult>,
+    pub hausdorff: Option<Box<HausdorffResult>>,
     /// When `cmmr` was asked: the sum over the vertices of each body of the squared distance to the
     /// other filled body (compensated sum of exactly chosen terms).
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -298,6 +305,16 @@ pub struct Costs {
     /// Pair-frames beyond their query's `within` (by the broad or the narrow phase); these frames are
     /// not in the report.
     pub within_beyond: u64,
+    /// Pair jobs the plan materialized (one per distinct listed pair, or per pair of an all-pairs
+    /// query that is not streamed). A streamed query (all pairs, `within`, no `first_contact`)
+    /// adds none.
+    pub pair_jobs: u64,
+    /// Candidate pair-frames of streamed queries: pairs the broad phase could not certify beyond
+    /// `within` (every in-scope pair without the broad phase), each one narrow-phase evaluation.
+    pub streamed_candidates: u64,
+    /// The most candidate pairs of streamed queries held at once (in one frame): with the bodies
+    /// and the reported results, what a streamed query's memory grows with.
+    pub max_frame_candidates: u64,
 }
 
 impl Cost {
@@ -334,6 +351,9 @@ impl Costs {
             broad_phase_examined: self.broad_phase_examined + o.broad_phase_examined,
             broad_phase_skipped: self.broad_phase_skipped + o.broad_phase_skipped,
             within_beyond: self.within_beyond + o.within_beyond,
+            pair_jobs: self.pair_jobs + o.pair_jobs,
+            streamed_candidates: self.streamed_candidates + o.streamed_candidates,
+            max_frame_candidates: self.max_frame_candidates.max(o.max_frame_candidates),
         }
     }
 
@@ -473,6 +493,16 @@ impl Report {
                 c.within_beyond, self.pairs_beyond
             );
         }
+        if c.streamed_candidates > 0 {
+            let _ = writeln!(
+                s,
+                "(all pairs within: {} candidate pair-frames evaluated, at most {} in one frame; {} pair jobs planned)",
+                c.streamed_candidates, c.max_frame_candidates, c.pair_jobs
+            );
+        }
+        for e in &self.errors {
+            let _ = writeln!(s, "\nerror: {e}");
+        }
         if self.failed {
             let _ = writeln!(s, "\nSOME PAIRS FAILED (see above)");
         }
@@ -564,7 +594,7 @@ fn pair_lines(p: &PairReport) -> Vec<(String, String)> {
     }
     let by_hausdorff = frames
         .iter()
-        .filter_map(|f| f.hausdorff.map(|h| (f, h)))
+        .filter_map(|f| f.hausdorff.as_deref().map(|h| (f, h)))
         .max_by(|x, y| x.1.distance.total_cmp(&y.1.distance));
     if let Some((f, h)) = by_hausdorff {
         let d = if h.direction == "a_to_b" {

@@ -2,7 +2,11 @@
 //!
 //! # The plan
 //! [`plan`] merges the queries into one [`PairJob`] per unordered pair (the union of the effects of
-//! every query naming it), so a pair named twice is computed once. A job's per-frame effects
+//! every query naming it), so a pair named twice is computed once. A **streamed** query (all pairs,
+//! `within`, no `first_contact`) gets no jobs ([`Plan::streamed`]): each frame evaluates only the
+//! broad phase's candidate pairs without a job (static–static pairs at the first frame only), and
+//! keeps only the frames within the threshold; its memory is `O(bodies + candidates of a frame +
+//! reported results)`, bounded at run time by [`MAX_FRAME_CANDIDATES`] and [`MAX_PAIR_FRAMES`]. A job's per-frame effects
 //! (`distance`, `closest_points`, `vertex_distance`) run at every frame if either body moves and
 //! once if neither does; `first_contact` runs once per job over the whole span. Bodies are posed only
 //! when a job needs them at that time; a static body is posed once.
@@ -48,8 +52,10 @@ use polydist_convex::{
 use polydist_polygon::predicates::{Counted, Exact, Fast, Kernel, Robust, predicate_counts};
 use polydist_polygon::{ConvexPolygon, Feature, PolygonError};
 
-use crate::broad::{Aabb, sweep_and_prune};
-use crate::load::{Body, ContactParams, Scene, Shape};
+use crate::broad::{Aabb, sweep_classes};
+use crate::load::{
+    Body, ContactParams, MAX_FRAME_CANDIDATES, MAX_PAIR_FRAMES, PairSet, Scene, Shape,
+};
 use crate::motion::{Motion, down, pose_error, relative_speed_bound, up};
 use crate::report::{
     ClosestPoints, ContactOutcome, ContactResult, Cost, Costs, DirectedHausdorff, FrameResult,
@@ -64,7 +70,7 @@ pub struct PairJob {
     pub a: usize,
     /// The second body.
     pub b: usize,
-    /// The indices of the queries naming the pair.
+    /// The indices of the queries naming the pair, ascending.
     pub queries: Vec<usize>,
     /// The union of their effects.
     pub effects: EffectSet,
@@ -75,48 +81,94 @@ pub struct PairJob {
     /// The distance threshold of the per-frame effects: the loosest of the queries naming the pair
     /// (`None` when one of them has none).
     pub within: Option<f64>,
+    /// Where the pair is first named: the query's index and the pair's position in it (a list's
+    /// index; `a·n + b` for all pairs of `n` bodies, `a < b`). The report lists pairs in this order.
+    pub first: (usize, u64),
 }
 
 impl PairJob {
     /// Whether the job has a per-frame effect.
     #[must_use]
     pub fn per_frame(&self) -> bool {
-        [
-            Effect::Distance,
-            Effect::ClosestPoints,
-            Effect::VertexDistance,
-            Effect::Hausdorff,
-            Effect::Cmmr,
-        ]
-        .into_iter()
-        .any(|e| self.effects.contains(e))
+        self.effects.has_per_frame()
     }
 
-    /// Whether the job needs the convex distance query per frame.
-    fn needs_distance(&self) -> bool {
+    /// What a frame of the job computes.
+    pub(crate) fn ask(&self) -> Ask {
+        Ask {
+            effects: self.effects,
+            within: self.within,
+        }
+    }
+}
+
+/// What one frame of a pair computes: the effects and the threshold.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Ask {
+    pub(crate) effects: EffectSet,
+    pub(crate) within: Option<f64>,
+}
+
+impl Ask {
+    /// Whether the convex distance query is needed.
+    fn needs_distance(self) -> bool {
         self.effects.contains(Effect::Distance) || self.effects.contains(Effect::ClosestPoints)
     }
 }
 
-/// The plan: the jobs, in the order the queries first name their pairs.
+/// The streamed queries of a plan: all pairs with `within`, without `first_contact`
+/// ([`Query::is_streamed`](crate::Query::is_streamed)). Their pairs are never materialized: each
+/// frame takes its candidates from the broad phase.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Streamed {
+    /// The streamed queries, ascending.
+    pub queries: Vec<usize>,
+    /// The union of their effects.
+    pub effects: EffectSet,
+    /// The loosest of their thresholds.
+    pub within: f64,
+}
+
+/// The plan: the materialized pair jobs, in the order the queries first name their pairs, and the
+/// streamed queries.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Plan {
-    /// The jobs.
+    /// The jobs: one per distinct pair of the listed queries and of the all-pairs queries that are
+    /// not streamed. A pair of a job is also named by the streamed queries (which name every pair):
+    /// their effects, thresholds and names are merged into the job.
     pub jobs: Vec<PairJob>,
+    /// The streamed queries: every pair without a job, evaluated from the broad phase's candidates.
+    /// `None` when there are none, or when an all-pairs query that is not streamed materializes
+    /// every pair anyway (then the streamed queries are merged into its jobs).
+    pub streamed: Option<Streamed>,
 }
 
 /// Builds the plan of a validated scene (see the module docs).
 ///
 /// # Complexity
-/// `O(total pairs named)` expected (hashing).
+/// `O(total pairs named)` expected (hashing); a streamed query names none.
 #[must_use]
 pub fn plan(scene: &Scene) -> Plan {
-    let mut index: HashMap<(usize, usize), usize> = HashMap::new();
+    let n = scene.bodies.len();
+    let order_key = |a: usize, b: usize| a.min(b) as u64 * n as u64 + a.max(b) as u64;
+    // An all-pairs query that is not streamed materializes every pair: then nothing is streamed.
+    let materialize_all = scene
+        .queries
+        .iter()
+        .any(|q| matches!(q.pairs, PairSet::All) && !q.is_streamed());
+    let is_streamed = |q: &crate::load::Query| !materialize_all && q.is_streamed();
+    let mut index = PairIndex::new(n, materialize_all);
     let mut jobs: Vec<PairJob> = Vec::new();
     for (k, q) in scene.queries.iter().enumerate() {
-        for &(a, b) in &q.pairs {
-            let key = (a.min(b), a.max(b));
-            let j = *index.entry(key).or_insert_with(|| {
+        if is_streamed(q) {
+            continue;
+        }
+        let all = matches!(q.pairs, PairSet::All);
+        if all {
+            jobs.reserve(PairSet::All.count(n).try_into().unwrap_or(0));
+        }
+        for (pos, (a, b)) in q.pairs.iter(n).enumerate() {
+            let j = index.get_or_insert(a, b, || {
                 jobs.push(PairJob {
                     a,
                     b,
@@ -126,6 +178,7 @@ pub fn plan(scene: &Scene) -> Plan {
                     moving: !(scene.bodies[a].motion.is_static()
                         && scene.bodies[b].motion.is_static()),
                     within: q.within,
+                    first: (k, if all { order_key(a, b) } else { pos as u64 }),
                 });
                 jobs.len() - 1
             });
@@ -134,7 +187,7 @@ pub fn plan(scene: &Scene) -> Plan {
                 (Some(x), Some(y)) => Some(x.max(y)),
                 _ => None,
             };
-            if !job.queries.contains(&k) {
+            if job.queries.last() != Some(&k) {
                 job.queries.push(k);
             }
             if q.effects.contains(Effect::FirstContact)
@@ -145,7 +198,79 @@ pub fn plan(scene: &Scene) -> Plan {
             job.effects = job.effects.union(q.effects);
         }
     }
-    Plan { jobs }
+    let mut streamed: Option<Streamed> = None;
+    for (k, q) in scene.queries.iter().enumerate() {
+        if let (true, Some(r)) = (is_streamed(q), q.within) {
+            let s = streamed.get_or_insert(Streamed {
+                queries: Vec::new(),
+                effects: EffectSet::EMPTY,
+                within: r,
+            });
+            s.queries.push(k);
+            s.effects = s.effects.union(q.effects);
+            s.within = s.within.max(r);
+        }
+    }
+    if let Some(s) = &streamed {
+        // The streamed queries name every pair, so every job's pair too.
+        let k0 = s.queries[0];
+        for job in &mut jobs {
+            job.queries.extend(&s.queries);
+            job.queries.sort_unstable();
+            job.queries.dedup();
+            job.effects = job.effects.union(s.effects);
+            job.within = job.within.map(|w| w.max(s.within));
+            if k0 < job.first.0 {
+                job.first = (k0, order_key(job.a, job.b));
+                (job.a, job.b) = (job.a.min(job.b), job.a.max(job.b));
+            }
+        }
+        jobs.sort_by_key(|j| j.first);
+    }
+    Plan { jobs, streamed }
+}
+
+/// The job of each pair while planning: a dense table (4 bytes per pair, no hashing) when every
+/// pair gets a job anyway, else a hash map of the named pairs.
+enum PairIndex {
+    Dense { n: usize, slots: Vec<u32> },
+    Sparse(HashMap<(usize, usize), usize>),
+}
+
+impl PairIndex {
+    fn new(n: usize, every_pair: bool) -> PairIndex {
+        let pairs = PairSet::All.count(n);
+        // u32 slots: MAX_PAIRS (10^7) fits; beyond, the validation refused the scene anyway.
+        match usize::try_from(pairs) {
+            Ok(len) if every_pair && pairs < u128::from(u32::MAX) => PairIndex::Dense {
+                n,
+                slots: vec![u32::MAX; len],
+            },
+            _ => PairIndex::Sparse(HashMap::new()),
+        }
+    }
+
+    /// The job index of the pair `{a, b}`, made by `make` (which returns the new index) when new.
+    fn get_or_insert(&mut self, a: usize, b: usize, make: impl FnOnce() -> usize) -> usize {
+        let (lo, hi) = (a.min(b), a.max(b));
+        match self {
+            PairIndex::Dense { n, slots } => {
+                // Rank of (lo, hi) in the order (0, 1), (0, 2), …, (1, 2), …
+                let rank = lo * *n - lo * (lo + 1) / 2 + (hi - lo - 1);
+                match slots.get_mut(rank) {
+                    Some(slot) if *slot != u32::MAX => *slot as usize,
+                    Some(slot) => {
+                        let j = make();
+                        *slot = u32::try_from(j).unwrap_or(u32::MAX);
+                        j
+                    }
+                    // Not reached for a pair of distinct bodies below n.
+                    None => make(),
+                }
+            }
+            PairIndex::Sparse(map) => *map.entry((lo, hi)).or_insert_with(make),
+        }
+    }
 }
 
 /// How to run a scene.
@@ -164,6 +289,10 @@ pub struct RunOptions {
     /// The number of threads: `None` uses rayon's global pool (all cores, or `RAYON_NUM_THREADS`);
     /// `Some(n)` runs on a pool of `n` threads. The results are identical for every count.
     pub threads: Option<usize>,
+    /// The most candidate pairs of streamed queries in one frame: default and ceiling
+    /// [`MAX_FRAME_CANDIDATES`] (a larger value is taken as that). A run reaching it stops the
+    /// streamed queries with an error in [`Report::errors`].
+    pub max_frame_candidates: u64,
 }
 
 impl Default for RunOptions {
@@ -174,6 +303,7 @@ impl Default for RunOptions {
             count_predicates: true,
             broad_phase: true,
             threads: None,
+            max_frame_candidates: MAX_FRAME_CANDIDATES,
         }
     }
 }
@@ -303,6 +433,68 @@ struct JobState {
     frames: Vec<FrameResult>,
 }
 
+/// The posed bodies of a frame (`None`: not posed, no job needs it).
+type PosedSlots = Vec<Option<Result<Posed, String>>>;
+
+/// One pair's frame: the per-frame effects of `ask` on the posed bodies, or the invalid frame of a
+/// body that could not be posed; `None` when a body was not posed.
+#[allow(
+    clippy::too_many_arguments,
+    reason = "the frame's context, passed by reference"
+)]
+fn pair_frame<K: Kernel>(
+    scene: &Scene,
+    ask: Ask,
+    t: f64,
+    (a, b): (usize, usize),
+    posed: &PosedSlots,
+    hint: Option<&mut Option<Hint>>,
+    meter: &Meter,
+    costs: &mut Costs,
+) -> Option<FrameResult> {
+    let (Some(pa), Some(pb)) = (&posed[a], &posed[b]) else {
+        return None;
+    };
+    Some(match (pa, pb) {
+        (Ok(pa), Ok(pb)) => {
+            let (ba, bb) = (&scene.bodies[a], &scene.bodies[b]);
+            eval_frame::<K>(ask, t, (ba, pa), (bb, pb), hint, meter, costs)
+        }
+        (Err(e), _) | (_, Err(e)) => {
+            let mut f = FrameResult::empty(t, Status::Invalid);
+            f.error = Some(e.clone());
+            f
+        }
+    })
+}
+
+/// Streamed pair-frames kept for the report, and what they cost.
+type Kept = (Vec<((usize, usize), FrameResult)>, Costs);
+
+/// Folds evaluated pair-frames into the frames to keep (beyond ones are only counted) and costs.
+fn keep_within(
+    (mut kept, costs): Kept,
+    (pair, frame, local): ((usize, usize), Option<FrameResult>, Costs),
+) -> Kept {
+    let mut costs = costs.merge(local);
+    match frame {
+        Some(f) if f.status == Some(Status::Beyond) => costs.within_beyond += 1,
+        Some(f) => kept.push((pair, f)),
+        None => {}
+    }
+    (kept, costs)
+}
+
+/// Joins two [`Kept`] of a parallel fold.
+fn join_kept((mut a, ca): Kept, (b, cb): Kept) -> Kept {
+    a.extend(b);
+    (a, ca.merge(cb))
+}
+
+#[allow(
+    clippy::too_many_lines,
+    reason = "the frame loop reads best in one piece"
+)]
 fn run_with<K: Kernel>(
     scene: &Scene,
     options: &RunOptions,
@@ -314,15 +506,21 @@ fn run_with<K: Kernel>(
         count: options.count_predicates,
     };
     let plan = plan(scene);
-    let mut costs = Costs::default();
+    let mut costs = Costs {
+        pair_jobs: plan.jobs.len() as u64,
+        ..Costs::default()
+    };
     let time = scene.time;
     let n = scene.bodies.len();
+    let is_static: Vec<bool> = scene.bodies.iter().map(|b| b.motion.is_static()).collect();
+    let any_moving = is_static.iter().any(|s| !s);
+    let streamed = plan.streamed.as_ref();
     let contact_jobs = plan
         .jobs
         .iter()
         .filter(|j| j.effects.contains(Effect::FirstContact))
         .count() as u64;
-    let has_frame_jobs = plan.jobs.iter().any(PairJob::per_frame);
+    let has_frame_jobs = streamed.is_some() || plan.jobs.iter().any(PairJob::per_frame);
     let total = if has_frame_jobs {
         time.frames as u64
     } else {
@@ -333,36 +531,64 @@ fn run_with<K: Kernel>(
     // Per-frame effects: frame-major, so each body is posed once per frame for all its pairs.
     let is_frame_job: Vec<bool> = plan.jobs.iter().map(PairJob::per_frame).collect();
     let mut states: Vec<JobState> = (0..plan.jobs.len()).map(|_| JobState::default()).collect();
-    let mut needed = vec![false; n];
-    // Bodies of jobs with a threshold: the broad phase's boxes.
+    // A streamed query needs every body.
+    let mut needed = vec![streamed.is_some(); n];
+    // Jobs with a threshold answered by the broad phase, and their bodies (the boxes swept).
+    let broad_job: Vec<bool> = plan
+        .jobs
+        .iter()
+        .zip(&is_frame_job)
+        .map(|(j, &f)| f && options.broad_phase && j.within.is_some())
+        .collect();
     let mut in_broad = vec![false; n];
     let mut broad_r = f64::NEG_INFINITY;
+    // The jobs by pair: the broad jobs (for the sweep), and every job when streaming (the streamed
+    // queries leave the pairs of jobs to them).
     let mut job_of_pair: HashMap<(usize, usize), usize> = HashMap::new();
     for (j, job) in plan.jobs.iter().enumerate() {
-        if !is_frame_job[j] {
-            continue;
+        let key = (job.a.min(job.b), job.a.max(job.b));
+        if streamed.is_some() || broad_job[j] {
+            job_of_pair.insert(key, j);
         }
-        needed[job.a] = true;
-        needed[job.b] = true;
-        if let (true, Some(r)) = (options.broad_phase, job.within) {
+        if is_frame_job[j] {
+            needed[job.a] = true;
+            needed[job.b] = true;
+        }
+        if broad_job[j] {
             in_broad[job.a] = true;
             in_broad[job.b] = true;
-            broad_r = broad_r.max(r);
-            job_of_pair.insert((job.a.min(job.b), job.a.max(job.b)), j);
+            broad_r = broad_r.max(job.within.unwrap_or(f64::INFINITY));
         }
     }
-    let broad = !job_of_pair.is_empty();
+    let broad_jobs = broad_job.iter().any(|&b| b);
+    // The pairs of the streamed queries at a frame: every pair without a job at the first frame,
+    // then those with a moving body (static pairs are evaluated once).
+    let all_pairs = n as u64 * (n as u64).saturating_sub(1) / 2;
+    let n_static = is_static.iter().filter(|&&s| s).count() as u64;
+    let static_pairs = n_static * n_static.saturating_sub(1) / 2;
+    let moving_jobs = plan.jobs.iter().filter(|j| j.moving).count() as u64;
+    let streamed_pairs = all_pairs - plan.jobs.len() as u64;
+    let in_scope = |k: usize| {
+        if k == 0 {
+            streamed_pairs
+        } else {
+            all_pairs - static_pairs - moving_jobs
+        }
+    };
+    let mut streaming = streamed.is_some();
+    let mut streamed_total = 0u64;
+    let mut streamed_out: HashMap<(usize, usize), Vec<FrameResult>> = HashMap::new();
+    let mut errors: Vec<String> = Vec::new();
+
     let mut near = vec![false; plan.jobs.len()];
-    let mut posed: Vec<Option<Result<Posed, String>>> = (0..n).map(|_| None).collect();
+    let mut posed: PosedSlots = (0..n).map(|_| None).collect();
     for k in 0..(if has_frame_jobs { time.frames } else { 0 }) {
         let t = time.frame(k);
         // Posing, in parallel over the bodies that need it.
         let pose_cost = posed
             .par_iter_mut()
             .enumerate()
-            .filter(|(i, slot)| {
-                needed[*i] && (!scene.bodies[*i].motion.is_static() || slot.is_none())
-            })
+            .filter(|(i, slot)| needed[*i] && (!is_static[*i] || slot.is_none()))
             .map(|(i, slot)| {
                 let mut c = Cost::default();
                 *slot = Some(meter.measure_uncounted(&mut c, || pose_body(&scene.bodies[i], t)));
@@ -371,33 +597,83 @@ fn run_with<K: Kernel>(
             .reduce(Cost::default, Cost::merge);
         costs.pose = costs.pose.merge(pose_cost);
 
-        // The broad phase: which thresholded jobs may be near at this frame.
-        if broad && (k == 0 || scene.bodies.iter().any(|b| !b.motion.is_static())) {
+        // The streamed queries at this frame: the pairs in scope, at most `budget` candidates.
+        let stream = streamed.filter(|_| streaming && (k == 0 || any_moving));
+        let scope = if stream.is_some() { in_scope(k) } else { 0 };
+        let budget = options.max_frame_candidates.min(MAX_FRAME_CANDIDATES).min(
+            u64::try_from(MAX_PAIR_FRAMES)
+                .unwrap_or(u64::MAX)
+                .saturating_sub(streamed_total),
+        );
+        let sweep_stream = stream.filter(|_| options.broad_phase);
+        let mut candidates: Vec<(usize, usize)> = Vec::new();
+        let mut cut = stream.is_some() && !options.broad_phase && scope > budget;
+
+        // The broad phase: which broad jobs may be near, and the streamed candidates.
+        if (broad_jobs || sweep_stream.is_some()) && (k == 0 || any_moving) {
             let mut cost = Cost::default();
             meter.measure_uncounted(&mut cost, || {
                 let boxes: Vec<Option<Aabb>> = (0..n)
-                    .map(|i| match (&posed[i], in_broad[i]) {
-                        (Some(Ok(p)), true) => Aabb::of(p.poly.vertices()),
+                    .map(|i| match &posed[i] {
+                        Some(Ok(p)) if in_broad[i] || sweep_stream.is_some() => {
+                            Aabb::of(p.poly.vertices())
+                        }
                         _ => None,
                     })
                     .collect();
-                let (candidates, stats) = sweep_and_prune(&boxes, broad_r);
+                let far = |a: usize, b: usize, r: f64| {
+                    matches!((boxes[a], boxes[b]), (Some(x), Some(y)) if x.certainly_farther(&y, r))
+                };
+                let r = sweep_stream.map_or(broad_r, |s| broad_r.max(s.within));
                 near.iter_mut().for_each(|x| *x = false);
-                for (a, b) in candidates {
+                // After the first frame the static boxes form their own class: static–static
+                // pairs are never walked again.
+                let class = |i: usize| usize::from(k > 0 && is_static[i]);
+                let (stats, stopped) = sweep_classes(&boxes, class, [true, k == 0], r, |a, b| {
                     if let Some(&j) = job_of_pair.get(&(a, b)) {
-                        let r = plan.jobs[j].within.unwrap_or(f64::INFINITY);
-                        let (ba, bb) = (boxes[a], boxes[b]);
-                        near[j] =
-                            !matches!((ba, bb), (Some(x), Some(y)) if x.certainly_farther(&y, r));
+                        if broad_job[j] {
+                            near[j] = !far(a, b, plan.jobs[j].within.unwrap_or(f64::INFINITY));
+                        }
+                        true
+                    } else if let Some(s) = sweep_stream.filter(|s| !far(a, b, s.within)) {
+                        let _ = s;
+                        candidates.push((a, b));
+                        candidates.len() as u64 <= budget
+                    } else {
+                        true
                     }
+                });
+                if stopped {
+                    // The streamed queries stop here; the broad jobs go to the narrow phase this
+                    // frame (the same results).
+                    cut = true;
+                    near.iter_mut().for_each(|x| *x = true);
                 }
                 costs.broad_phase_examined += stats.examined;
             });
             costs.broad_phase = costs.broad_phase.merge(cost);
         }
+        if sweep_stream.is_some() && !cut {
+            // Bodies that could not be posed have no box: their pairs get invalid frames.
+            for i in (0..n).filter(|&i| matches!(posed[i], Some(Err(_)))) {
+                for j in (0..n).filter(|&j| j != i) {
+                    let other_failed = matches!(posed[j], Some(Err(_)));
+                    let key = (i.min(j), i.max(j));
+                    if (other_failed && j < i)
+                        || (k > 0 && is_static[i] && is_static[j])
+                        || job_of_pair.contains_key(&key)
+                    {
+                        continue;
+                    }
+                    candidates.push(key);
+                }
+            }
+            cut = candidates.len() as u64 > budget;
+        }
 
+        // The materialized jobs, in parallel.
         let near = &near;
-        let posed = &posed;
+        let posed_ref = &posed;
         let frame_costs = states
             .par_iter_mut()
             .enumerate()
@@ -405,36 +681,109 @@ fn run_with<K: Kernel>(
             .map(|(j, state)| {
                 let job = &plan.jobs[j];
                 let mut local = Costs::default();
-                let (Some(pa), Some(pb)) = (&posed[job.a], &posed[job.b]) else {
-                    return local;
+                let both_posed = matches!(
+                    (&posed_ref[job.a], &posed_ref[job.b]),
+                    (Some(Ok(_)), Some(Ok(_)))
+                );
+                let result = if both_posed && broad_job[j] && !near[j] {
+                    local.broad_phase_skipped += 1;
+                    Some(FrameResult::empty(t, Status::Beyond))
+                } else {
+                    let hint = (coherence && job.moving).then_some(&mut state.hint);
+                    pair_frame::<K>(
+                        scene,
+                        job.ask(),
+                        t,
+                        (job.a, job.b),
+                        posed_ref,
+                        hint,
+                        &meter,
+                        &mut local,
+                    )
                 };
-                let (ba, bb) = (&scene.bodies[job.a], &scene.bodies[job.b]);
-                let result = match (pa, pb) {
-                    (Ok(_), Ok(_)) if broad && job.within.is_some() && !near[j] => {
-                        local.broad_phase_skipped += 1;
-                        FrameResult::empty(t, Status::Beyond)
-                    }
-                    (Ok(pa), Ok(pb)) => {
-                        let hint = (coherence && job.moving).then_some(&mut state.hint);
-                        eval_frame::<K>(job, t, (ba, pa), (bb, pb), hint, &meter, &mut local)
-                    }
-                    (Err(e), _) | (_, Err(e)) => {
-                        let mut f = FrameResult::empty(t, Status::Invalid);
-                        f.error = Some(e.clone());
-                        f
-                    }
-                };
-                if result.status == Some(Status::Beyond) {
+                match result {
                     // Not stored: a `within` query over many bodies would otherwise keep one
                     // frame per pair and frame (the report counts them).
-                    local.within_beyond += 1;
-                } else {
-                    state.frames.push(result);
+                    Some(f) if f.status == Some(Status::Beyond) => local.within_beyond += 1,
+                    Some(f) => state.frames.push(f),
+                    None => {}
                 }
                 local
             })
             .reduce(Costs::default, Costs::merge);
         costs = costs.merge(frame_costs);
+
+        // The streamed queries: their candidates, in parallel.
+        if let Some(s) = stream {
+            if cut {
+                streaming = false;
+                let names: Vec<&str> = s
+                    .queries
+                    .iter()
+                    .map(|&q| scene.queries[q].name.as_str())
+                    .collect();
+                errors.push(format!(
+                    "{} (all pairs within {}): stopped at frame {k} (t = {t}): more than {budget} \
+                     candidate pairs (limits: {} per frame, MAX_FRAME_CANDIDATES; \
+                     {MAX_PAIR_FRAMES} pair-frames per run, MAX_PAIR_FRAMES); no frame from \
+                     t = {t} on is computed for them: lower `within` or list the pairs",
+                    names.join(", "),
+                    s.within,
+                    options.max_frame_candidates.min(MAX_FRAME_CANDIDATES)
+                ));
+            } else {
+                let ask = Ask {
+                    effects: s.effects,
+                    within: Some(s.within),
+                };
+                let eval = |pair: (usize, usize)| {
+                    let mut local = Costs::default();
+                    let f =
+                        pair_frame::<K>(scene, ask, t, pair, posed_ref, None, &meter, &mut local);
+                    (pair, f, local)
+                };
+                let empty = || (Vec::new(), Costs::default());
+                let (kept, local) = if options.broad_phase {
+                    candidates
+                        .par_iter()
+                        .map(|&p| eval(p))
+                        .fold(empty, keep_within)
+                        .reduce(empty, join_kept)
+                } else {
+                    let job_of_pair = &job_of_pair;
+                    let is_static = &is_static;
+                    (0..n)
+                        .into_par_iter()
+                        .flat_map_iter(|a| {
+                            (a + 1..n)
+                                .filter(move |&b| {
+                                    (k == 0 || !(is_static[a] && is_static[b]))
+                                        && !job_of_pair.contains_key(&(a, b))
+                                })
+                                .map(move |b| (a, b))
+                        })
+                        .map(eval)
+                        .fold(empty, keep_within)
+                        .reduce(empty, join_kept)
+                };
+                let evaluated = if options.broad_phase {
+                    candidates.len() as u64
+                } else {
+                    scope
+                };
+                costs = costs.merge(local);
+                costs.streamed_candidates += evaluated;
+                costs.max_frame_candidates = costs.max_frame_candidates.max(evaluated);
+                // The pairs of the scope the broad phase answered beyond from boxes.
+                let skipped = scope.saturating_sub(evaluated);
+                costs.broad_phase_skipped += skipped;
+                costs.within_beyond += skipped;
+                streamed_total += evaluated;
+                for (pair, f) in kept {
+                    streamed_out.entry(pair).or_default().push(f);
+                }
+            }
+        }
         progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
     }
 
@@ -460,9 +809,12 @@ fn run_with<K: Kernel>(
         .collect();
     let mut contacts = contact_jobs.into_iter().zip(contacts).peekable();
 
-    let mut pairs = Vec::new();
-    let mut failed = false;
+    let mut pairs: Vec<((usize, u64), PairReport)> = Vec::new();
+    let mut failed = !errors.is_empty();
     let mut pairs_beyond = 0u64;
+    let names = |qs: &[usize]| -> Vec<String> {
+        qs.iter().map(|&q| scene.queries[q].name.clone()).collect()
+    };
     for (j, (job, state)) in plan.jobs.iter().zip(states).enumerate() {
         let first_contact = match contacts.peek() {
             Some((cj, _)) if *cj == j => contacts.next().map(|(_, (r, local))| {
@@ -485,21 +837,47 @@ fn run_with<K: Kernel>(
                 )
             });
         failed |= pair_failed;
-        pairs.push(PairReport {
-            a: ba.id.clone(),
-            b: bb.id.clone(),
-            kinds: [ba.shape.kind(), bb.shape.kind()],
-            queries: job
-                .queries
-                .iter()
-                .map(|&q| scene.queries[q].name.clone())
-                .collect(),
-            effects: job.effects.iter().map(Effect::name).collect(),
-            moving: job.moving,
-            frames: state.frames,
-            first_contact,
-            failed: pair_failed,
-        });
+        pairs.push((
+            job.first,
+            PairReport {
+                a: ba.id.clone(),
+                b: bb.id.clone(),
+                kinds: [ba.shape.kind(), bb.shape.kind()],
+                queries: names(&job.queries),
+                effects: job.effects.iter().map(Effect::name).collect(),
+                moving: job.moving,
+                frames: state.frames,
+                first_contact,
+                failed: pair_failed,
+            },
+        ));
+    }
+    if let Some(s) = streamed {
+        pairs_beyond += streamed_pairs - streamed_out.len() as u64;
+        let mut found: Vec<((usize, usize), Vec<FrameResult>)> = streamed_out.into_iter().collect();
+        found.sort_unstable_by_key(|(pair, _)| *pair);
+        let effects: Vec<&'static str> = s.effects.iter().map(Effect::name).collect();
+        for ((a, b), frames) in found {
+            let (ba, bb) = (&scene.bodies[a], &scene.bodies[b]);
+            let pair_failed = frames.iter().any(|f| f.error.is_some());
+            failed |= pair_failed;
+            pairs.push((
+                (s.queries[0], a as u64 * n as u64 + b as u64),
+                PairReport {
+                    a: ba.id.clone(),
+                    b: bb.id.clone(),
+                    kinds: [ba.shape.kind(), bb.shape.kind()],
+                    queries: names(&s.queries),
+                    effects: effects.clone(),
+                    moving: !(is_static[a] && is_static[b]),
+                    frames,
+                    first_contact: None,
+                    failed: pair_failed,
+                },
+            ));
+        }
+        // Jobs and streamed pairs, in the order their queries first name them.
+        pairs.sort_by_key(|(key, _)| *key);
     }
     Report {
         version: crate::report::REPORT_VERSION,
@@ -512,10 +890,11 @@ fn run_with<K: Kernel>(
             step: time.step,
             frames: time.frames,
         },
-        pairs,
+        pairs: pairs.into_iter().map(|(_, p)| p).collect(),
         pairs_beyond,
         costs,
         failed,
+        errors,
     }
 }
 
@@ -598,7 +977,7 @@ fn caller_feature<K: Kernel>(poly: &ConvexPolygon, pose: Pose, f: Feature, x: DV
 
 /// The per-frame effects of one job at one frame.
 pub(crate) fn eval_frame<K: Kernel>(
-    job: &PairJob,
+    ask: Ask,
     t: f64,
     (ba, pa): (&Body, &Posed),
     (bb, pb): (&Body, &Posed),
@@ -614,7 +993,7 @@ pub(crate) fn eval_frame<K: Kernel>(
         return out;
     };
     let mut known: Option<Separation> = None;
-    if let Some(r) = job.within {
+    if let Some(r) = ask.within {
         // The threshold, decided exactly; the answer's separation serves the distance effects.
         match meter.measure(&mut costs.distance, || {
             distance_within::<K>(&pa.poly, &pb.poly, r)
@@ -626,7 +1005,7 @@ pub(crate) fn eval_frame<K: Kernel>(
             Within::Inside(sep) => known = Some(sep),
         }
     }
-    if job.needs_distance() {
+    if ask.needs_distance() {
         let sep = match (known, hint) {
             (Some(sep), _) => sep,
             (None, Some(h)) => {
@@ -671,16 +1050,16 @@ pub(crate) fn eval_frame<K: Kernel>(
             Separation::Overlapping => (Status::Overlapping, None),
         };
         out.status = Some(status);
-        if job.effects.contains(Effect::Distance) {
+        if ask.effects.contains(Effect::Distance) {
             let c = sep.closest();
             out.distance = Some(c.map_or(0.0, |c| c.distance));
             out.squared_distance = Some(c.map_or(0.0, |c| c.squared_distance));
         }
-        if job.effects.contains(Effect::ClosestPoints) {
+        if ask.effects.contains(Effect::ClosestPoints) {
             out.closest_points = closest;
         }
     }
-    if job.effects.contains(Effect::VertexDistance) {
+    if ask.effects.contains(Effect::VertexDistance) {
         let v = meter.measure(&mut costs.vertex_distance, || {
             min_vertex_distance_with::<K>(&pa.poly, &pb.poly)
         });
@@ -691,7 +1070,7 @@ pub(crate) fn eval_frame<K: Kernel>(
             vertex_b: poly_b.source_index(v.vertex_q),
         });
     }
-    if job.effects.contains(Effect::Hausdorff) {
+    if ask.effects.contains(Effect::Hausdorff) {
         let h = meter.measure(&mut costs.hausdorff, || {
             hausdorff_with::<K>(&pa.poly, &pb.poly)
         });
@@ -707,7 +1086,7 @@ pub(crate) fn eval_frame<K: Kernel>(
                     .map(|f| caller_feature::<K>(to, to_pose, f, d.point).into()),
             }
         };
-        out.hausdorff = Some(HausdorffResult {
+        out.hausdorff = Some(Box::new(HausdorffResult {
             distance: h.distance,
             squared_distance: h.squared_distance,
             direction: match h.direction {
@@ -716,9 +1095,9 @@ pub(crate) fn eval_frame<K: Kernel>(
             },
             a_to_b: directed(poly_a, poly_b, pb.pose, h.p_to_q),
             b_to_a: directed(poly_b, poly_a, pa.pose, h.q_to_p),
-        });
+        }));
     }
-    if job.effects.contains(Effect::Cmmr) {
+    if ask.effects.contains(Effect::Cmmr) {
         out.cmmr =
             Some(meter.measure(&mut costs.cmmr, || cmmr_value_with::<K>(&pa.poly, &pb.poly)));
     }

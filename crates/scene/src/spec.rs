@@ -233,9 +233,11 @@ pub struct QuerySpec {
     /// [`DEFAULT_MAX_STEPS`](crate::DEFAULT_MAX_STEPS)).
     #[serde(default)]
     pub max_steps: Option<u64>,
-    /// Per-frame effects only for pairs at distance at most `within` (decided exactly); farther pairs
-    /// are reported with status `beyond`, and the broad phase answers most of them from bounding
-    /// boxes without a narrow-phase query. Default: every pair (no threshold). Must be `≥ 0`.
+    /// Per-frame effects only for pairs at distance at most `within` (decided exactly); farther
+    /// pair-frames are left out of the report (counted), and the broad phase answers most of them
+    /// from bounding boxes without a narrow-phase query. With `pairs = "all"` (and no
+    /// `first_contact`) the query is streamed: its pairs are never materialized, each frame takes
+    /// its candidates from the broad phase. Default: every pair (no threshold). Must be `≥ 0`.
     #[serde(default)]
     pub within: Option<f64>,
 }
@@ -370,6 +372,21 @@ impl EffectSet {
     #[must_use]
     pub fn union(self, other: EffectSet) -> EffectSet {
         EffectSet(self.0 | other.0)
+    }
+
+    /// Whether the set has an effect computed per frame (`distance`, `closest_points`,
+    /// `vertex_distance`, `hausdorff`, `cmmr`).
+    #[must_use]
+    pub fn has_per_frame(self) -> bool {
+        [
+            Effect::Distance,
+            Effect::ClosestPoints,
+            Effect::VertexDistance,
+            Effect::Hausdorff,
+            Effect::Cmmr,
+        ]
+        .into_iter()
+        .any(|e| self.contains(e))
     }
 
     /// The effects in report order.

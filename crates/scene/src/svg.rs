@@ -258,7 +258,7 @@ pub fn render_svg(scene: &Scene, report: &Report) -> String {
                     .map_or_else(|| "-".to_owned(), |d| format!("{d}"))
             );
         }
-        if let Some(h) = f.hausdorff {
+        if let Some(h) = f.hausdorff.as_deref() {
             for (dir, d) in [("a_to_b", h.a_to_b), ("b_to_a", h.b_to_a)] {
                 let (a, b) = (
                     view.map(DVec2::from_array(d.point)),

@@ -388,7 +388,7 @@ fn hausdorff_and_cmmr_match_the_brute_force_per_frame() {
             .map(|&(x, y)| DVec2::new(x + dx, y + dy))
             .collect();
         let a = ConvexPolygon::try_new(&a).expect("valid");
-        let h = f.hausdorff.expect("hausdorff asked");
+        let h = f.hausdorff.as_deref().expect("hausdorff asked");
         let want = hausdorff_brute::<Robust>(&a, &b);
         assert_eq!(h.distance, want.distance, "t = {}", f.t);
         assert_eq!(h.squared_distance, want.squared_distance);
