@@ -66,6 +66,7 @@ mod contact;
 mod distance;
 mod exact;
 mod generators;
+mod hard;
 mod hausdorff;
 mod rounding;
 mod separation;
@@ -94,6 +95,7 @@ pub use crate::generators::simple::{
     CombPair, PocketPair, comb, interleaved_combs, interleaved_combs_ulps, pocket_pair, spiral,
     star, two_opt,
 };
+pub use crate::hard::HardAnswers;
 pub use crate::hausdorff::{
     cmmr, directed_hausdorff_filled, hausdorff_filled, per_vertex_sq_dist,
     sq_dist_point_filled_convex,

@@ -377,6 +377,66 @@ impl SimplePolygon {
         self.map.feature_on_edge::<K>(&self.vertices, e, q)
     }
 
+    /// The first pair of internal edges `(e, f)`, edge `e` of `self` and edge `f` of `other`, that share
+    /// a point (crossing, touching at a vertex, or overlapping along a line), or `None` when the two
+    /// boundaries are disjoint. Internal edge `e` joins internal vertices `e` and `e + 1` (mod `len`);
+    /// [`Self::source_index`] names their caller vertices.
+    ///
+    /// Both boundaries are swept together (Shamos–Hoey, as in [`Self::try_new`]); every decision is
+    /// exact (the [`Robust`] kernel). Together with one point location each way this decides whether two
+    /// simple polygons intersect: see `polydist_separation::intersection`.
+    ///
+    /// # Complexity
+    /// `O(N log N)` expected time, `O(N)` space, for `N = self.len() + other.len()`.
+    ///
+    /// # Examples
+    /// ```
+    /// use glam::DVec2;
+    /// use polydist_polygon::SimplePolygon;
+    ///
+    /// let square = SimplePolygon::try_new(&[DVec2::ZERO, DVec2::X, DVec2::ONE, DVec2::Y])?;
+    /// let moved = |dx: f64| {
+    ///     let ring: Vec<DVec2> = square.vertices().iter().map(|&v| v + DVec2::new(dx, 0.0)).collect();
+    ///     SimplePolygon::try_new(&ring)
+    /// };
+    /// assert_eq!(square.first_boundary_contact(&moved(2.0)?), None);
+    /// // Shifted by one unit, the squares share their edge x = 1 (edge 1 of the first, 3 of the second).
+    /// assert!(square.first_boundary_contact(&moved(1.0)?).is_some());
+    /// # Ok::<(), polydist_polygon::PolygonError>(())
+    /// ```
+    #[must_use]
+    pub fn first_boundary_contact(&self, other: &SimplePolygon) -> Option<(usize, usize)> {
+        sweep::first_contact_between(&self.vertices, &other.vertices)
+    }
+
+    /// [`Self::first_boundary_contact`] by testing every pair of edges, in lexicographic order of
+    /// `(e, f)`: the brute-force twin, for testing. It returns `Some` exactly when the sweep does (the
+    /// pair may differ).
+    ///
+    /// # Complexity
+    /// `O(n m)` exact segment tests.
+    ///
+    /// # Examples
+    /// ```
+    /// use glam::DVec2;
+    /// use polydist_polygon::SimplePolygon;
+    ///
+    /// let a = SimplePolygon::try_new(&[DVec2::ZERO, DVec2::X, DVec2::ONE, DVec2::Y])?;
+    /// let b = SimplePolygon::try_new(&[DVec2::new(0.5, 0.5), DVec2::new(3.0, 0.5), DVec2::new(3.0, 3.0)])?;
+    /// assert_eq!(a.first_boundary_contact_brute(&b), Some((1, 0)));
+    /// # Ok::<(), polydist_polygon::PolygonError>(())
+    /// ```
+    #[must_use]
+    pub fn first_boundary_contact_brute(&self, other: &SimplePolygon) -> Option<(usize, usize)> {
+        let (n, m) = (self.vertices.len(), other.vertices.len());
+        let (p, q) = (&self.vertices, &other.vertices);
+        (0..n)
+            .flat_map(|e| (0..m).map(move |f| (e, f)))
+            .find(|&(e, f)| {
+                ring::segments_intersect::<Robust>(p[e], p[(e + 1) % n], q[f], q[(f + 1) % m])
+            })
+    }
+
     /// Checks every invariant (see the type's docs) exactly, for tests; simplicity by brute force.
     ///
     /// # Errors

@@ -64,22 +64,40 @@ use crate::treap::Treap;
 /// Edge `i` joins `points[i]` and `points[(i + 1) mod m]`. Precondition: `m ≥ 3`, no two cyclically
 /// consecutive points equal, and no vertex a reversal (collinear with both neighbours on one side).
 pub(crate) fn first_intersection(points: &[DVec2]) -> Option<(usize, usize)> {
-    sweep(points).err()
+    let rings = Rings::new(&[points]);
+    sweep(&rings).err()
 }
 
-/// The sweep; `Err((i, j))` carries the first intersecting pair found, so that `?` stops it.
-fn sweep(points: &[DVec2]) -> Result<(), (usize, usize)> {
-    let m = points.len();
+/// The first pair of edges `(i, j)`, edge `i` of ring `a` and edge `j` of ring `b`, that meet (a shared
+/// point, touching included), or `None` when the two closed rings have no common point.
+///
+/// Precondition: each ring is simple (as [`first_intersection`] would say) with at least 3 vertices.
+/// The sweep runs over both rings at once: a bad contact is then a contact between the rings, since
+/// neither ring touches itself; the proof in the module docs applies unchanged (ring neighbours are
+/// pairs of consecutive edges of one ring).
+pub(crate) fn first_contact_between(a: &[DVec2], b: &[DVec2]) -> Option<(usize, usize)> {
+    let rings = Rings::new(&[a, b]);
+    let (s, t) = sweep(&rings).err()?;
+    // A contact is between the rings (each ring is simple), so `s` is in `a` and `t` in `b` (`s < t`).
+    Some((s, t.checked_sub(a.len())?))
+}
+
+/// The sweep; `Err((i, j))` carries the first intersecting pair found (global edge ids, `i < j`), so
+/// that `?` stops it.
+fn sweep(ring: &Rings<'_>) -> Result<(), (usize, usize)> {
+    let m = ring.total;
     let mut order: Vec<usize> = (0..m).collect();
-    order.sort_by(|&i, &j| lex_cmp(points[i], points[j]).then(i.cmp(&j)));
-    if let Some(w) = order.windows(2).find(|w| points[w[0]] == points[w[1]]) {
-        // The ring passes twice through one point; the edges leaving the two visits are not neighbours.
+    order.sort_by(|&i, &j| lex_cmp(ring.point(i), ring.point(j)).then(i.cmp(&j)));
+    if let Some(w) = order
+        .windows(2)
+        .find(|w| ring.point(w[0]) == ring.point(w[1]))
+    {
+        // The rings pass twice through one point; the edges leaving the two visits are not neighbours.
         return Err(sorted(w[0], w[1]));
     }
-    let ring = Ring { points, m };
     let mut status = Treap::new(m);
     for &v in &order {
-        let incident = [(v + m - 1) % m, v];
+        let incident = [ring.prev(v), v];
         for &e in &incident {
             if ring.right(e) == v {
                 let (below, above) = (status.prev(e), status.next(e));
@@ -106,27 +124,70 @@ fn sorted(i: usize, j: usize) -> (usize, usize) {
     if i < j { (i, j) } else { (j, i) }
 }
 
-/// The ring being swept.
-struct Ring<'a> {
-    points: &'a [DVec2],
-    m: usize,
+/// The rings being swept (one or two). Vertices and edges have global ids: ring `r`'s vertex `k` is
+/// `start[r] + k`, and edge `v` joins vertex `v` and the next vertex of its ring.
+struct Rings<'a> {
+    rings: [&'a [DVec2]; 2],
+    /// The global id of each ring's first vertex (`start[1] = rings[0].len()`).
+    start: [usize; 2],
+    /// How many rings are used (1 or 2).
+    count: usize,
+    total: usize,
 }
 
-impl Ring<'_> {
-    /// The vertex index of edge `e`'s lexicographically smaller end.
+impl<'a> Rings<'a> {
+    fn new(rings: &[&'a [DVec2]]) -> Rings<'a> {
+        let first = rings.first().copied().unwrap_or(&[]);
+        let second = rings.get(1).copied().unwrap_or(&[]);
+        Rings {
+            rings: [first, second],
+            start: [0, first.len()],
+            count: rings.len().min(2),
+            total: first.len() + if rings.len() > 1 { second.len() } else { 0 },
+        }
+    }
+
+    /// The ring holding global vertex (or edge) `v`, and its index there.
+    fn locate(&self, v: usize) -> (usize, usize) {
+        if self.count > 1 && v >= self.start[1] {
+            (1, v - self.start[1])
+        } else {
+            (0, v)
+        }
+    }
+
+    fn point(&self, v: usize) -> DVec2 {
+        let (r, k) = self.locate(v);
+        self.rings[r][k]
+    }
+
+    /// The next vertex of `v` around its ring.
+    fn next_vertex(&self, v: usize) -> usize {
+        let (r, k) = self.locate(v);
+        self.start[r] + (k + 1) % self.rings[r].len()
+    }
+
+    /// The edge ending at vertex `v` (the previous vertex around its ring).
+    fn prev(&self, v: usize) -> usize {
+        let (r, k) = self.locate(v);
+        let len = self.rings[r].len();
+        self.start[r] + (k + len - 1) % len
+    }
+
+    /// The vertex id of edge `e`'s lexicographically smaller end.
     fn left(&self, e: usize) -> usize {
-        let f = (e + 1) % self.m;
-        if lex_cmp(self.points[e], self.points[f]) == Ordering::Less {
+        let f = self.next_vertex(e);
+        if lex_cmp(self.point(e), self.point(f)) == Ordering::Less {
             e
         } else {
             f
         }
     }
 
-    /// The vertex index of edge `e`'s lexicographically larger end.
+    /// The vertex id of edge `e`'s lexicographically larger end.
     fn right(&self, e: usize) -> usize {
-        let f = (e + 1) % self.m;
-        if lex_cmp(self.points[e], self.points[f]) == Ordering::Less {
+        let f = self.next_vertex(e);
+        if lex_cmp(self.point(e), self.point(f)) == Ordering::Less {
             f
         } else {
             e
@@ -136,11 +197,11 @@ impl Ring<'_> {
     /// Where edge `s`, inserted at its left end `p`, goes relative to status edge `t` (`Less`: below).
     /// `Err` when they meet: `p` lies on `t`, or the two edges starting at `p` overlap.
     fn compare(&self, s: usize, t: usize) -> Result<Ordering, (usize, usize)> {
-        let p = self.points[self.left(s)];
-        let (tl, tr) = (self.points[self.left(t)], self.points[self.right(t)]);
+        let p = self.point(self.left(s));
+        let (tl, tr) = (self.point(self.left(t)), self.point(self.right(t)));
         let o = if self.left(t) == self.left(s) {
             // Both start at p: s is above t when its right end is left of p → right(t).
-            Robust::orient(p, tr, self.points[self.right(s)])
+            Robust::orient(p, tr, self.point(self.right(s)))
         } else {
             // p is above t when it is left of t directed left → right.
             Robust::orient(tl, tr, p)
@@ -161,15 +222,18 @@ impl Ring<'_> {
         }
     }
 
-    /// Whether edges `a`, `b` are the same or consecutive around the ring.
+    /// Whether edges `a` and `b` are the same or consecutive around one ring.
     fn neighbours(&self, a: usize, b: usize) -> bool {
-        a == b || (a + 1) % self.m == b || (b + 1) % self.m == a
+        a == b || self.next_vertex(a) == b || self.next_vertex(b) == a
     }
 
     /// Whether the closed edges `a` and `b` share a point.
     fn meet(&self, a: usize, b: usize) -> bool {
-        let m = self.m;
-        let p = self.points;
-        segments_intersect::<Robust>(p[a], p[(a + 1) % m], p[b], p[(b + 1) % m])
+        segments_intersect::<Robust>(
+            self.point(a),
+            self.point(self.next_vertex(a)),
+            self.point(b),
+            self.point(self.next_vertex(b)),
+        )
     }
 }

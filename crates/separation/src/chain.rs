@@ -7,36 +7,69 @@ use polydist_predicates::{Kernel, Sign, is_valid_coordinate};
 
 use crate::error::{Chain, SeparationError};
 use crate::frame::Frame;
+use crate::param::Param;
+
+/// An edge of the envelope `P°` between two consecutive visible vertices: the chain's edge `(a, b)`
+/// oriented upward (`H(a) < H(b)`), of which only the part between the heights of the two visible
+/// vertices, parameters `lo..hi` on `(a, b)`, is on the envelope. `lo` is `Start` when `a` is at the
+/// lower visible vertex's height (it is that vertex, or a vertex hidden behind it), else the shadow
+/// point `H(x) = H(v_k)` (a root, kept symbolic); `hi` likewise with `End`.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct EnvEdge {
+    pub(crate) a: DVec2,
+    pub(crate) b: DVec2,
+    /// The caller's indices of `a` and `b`.
+    pub(crate) ia: usize,
+    pub(crate) ib: usize,
+    /// The caller's edge index.
+    pub(crate) caller: usize,
+    pub(crate) lo: Param,
+    pub(crate) hi: Param,
+}
 
 /// A chain after Lemma 2: the perpendicularly visible vertices, strictly increasing in height, with
-/// their caller indices.
+/// their caller indices, and the envelope edge between each two consecutive ones.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct Prepared {
     pub(crate) pts: Vec<DVec2>,
     pub(crate) idx: Vec<usize>,
-    /// The caller's chain runs upward (increasing height with increasing index).
-    pub(crate) rising: bool,
-    /// The caller's index of the first vertex dropped from a run perpendicular to the line.
-    pub(crate) first_run: Option<usize>,
-    /// For each kept vertex, the first and the last vertex of its run at that height in the order
-    /// the chain is walked (both the vertex itself when it is alone at its height), with caller
-    /// indices: the edge from `last[k]` to `first[k + 1]` is a real edge of the chain.
-    pub(crate) first: Vec<(DVec2, usize)>,
-    pub(crate) last: Vec<(DVec2, usize)>,
+    /// `edges[k]` carries the envelope between `pts[k]` and `pts[k + 1]`.
+    pub(crate) edges: Vec<EnvEdge>,
 }
 
 impl Prepared {
     /// The real edge between heights `k` and `k + 1`: `(a, b, caller index of a, of b)`.
     pub(crate) fn edge(&self, k: usize) -> (DVec2, DVec2, usize, usize) {
-        let (a, ia) = self.last[k];
-        let (b, ib) = self.first[k + 1];
-        (a, b, ia, ib)
+        let e = &self.edges[k];
+        (e.a, e.b, e.ia, e.ib)
     }
 
     /// The caller's edge index of the real edge `k`.
     pub(crate) fn caller_edge(&self, k: usize) -> usize {
-        let ib = self.first[k + 1].1;
-        if self.rising { ib - 1 } else { ib }
+        self.edges[k].caller
+    }
+
+    /// A chain strictly increasing in height given as is (every vertex visible, each edge wholly
+    /// on the envelope), for unit tests.
+    #[cfg(test)]
+    pub(crate) fn from_rising(pts: &[DVec2]) -> Prepared {
+        Prepared {
+            pts: pts.to_vec(),
+            idx: (0..pts.len()).collect(),
+            edges: pts
+                .windows(2)
+                .enumerate()
+                .map(|(k, w)| EnvEdge {
+                    a: w[0],
+                    b: w[1],
+                    ia: k,
+                    ib: k + 1,
+                    caller: k,
+                    lo: Param::Start,
+                    hi: Param::End,
+                })
+                .collect(),
+        }
     }
 }
 
@@ -125,82 +158,52 @@ pub(crate) fn validate<K: Kernel>(
     Ok(frames)
 }
 
-/// Lemma 2 for a chain monotone along the line: checks monotonicity, drops repeated consecutive
-/// vertices, and keeps of each run of vertices at equal height (edges perpendicular to the line) only
-/// the one nearest to the line; the others are not perpendicularly visible. The result is strictly
-/// increasing in height. `O(n)` degree-2 tests.
-pub(crate) fn prepare_monotone<K: Kernel>(
+/// Checks that a chain is monotone along the line (heights never decrease, or never increase, along
+/// it; repeated consecutive vertices ignored) and does not double back within a run of vertices at
+/// equal height. Required by [`closest_visible_vertices`](crate::closest_visible_vertices) only.
+/// `O(n)` degree-2 tests.
+pub(crate) fn check_monotone<K: Kernel>(
     chain: &[DVec2],
     frame: Frame,
     which: Chain,
-) -> Result<Prepared, SeparationError> {
+) -> Result<(), SeparationError> {
     let n = chain.len();
     // The direction of the chain: the first strict height change.
     let rising = (1..n)
         .map(|i| frame.cmp_height::<K>(chain[i], chain[i - 1]))
         .find(|o| o.is_ne())
         .is_none_or(|o| o.is_gt());
-    let order: Vec<usize> = if rising {
-        (0..n).collect()
-    } else {
-        (0..n).rev().collect()
+    let bad = |index| {
+        Err(SeparationError::NotMonotone {
+            chain: which,
+            index,
+        })
     };
-    let mut out = Prepared {
-        rising,
-        ..Prepared::default()
-    };
-    let mut prev = order[0];
-    out.pts.push(chain[prev]);
-    out.idx.push(prev);
-    out.first.push((chain[prev], prev));
-    out.last.push((chain[prev], prev));
+    let mut prev = 0;
     // Direction of depth within the current run of equal heights (None: run of one vertex).
     let mut run_dir: Option<Ordering> = None;
-    for &i in &order[1..] {
+    for i in 1..n {
         let v = chain[i];
         if v == chain[prev] {
             continue; // a repeated vertex (zero-length edge): nothing new
         }
-        match frame.cmp_height::<K>(v, chain[prev]) {
-            Ordering::Less => {
-                return Err(SeparationError::NotMonotone {
-                    chain: which,
-                    index: i,
-                });
-            }
-            Ordering::Greater => {
-                run_dir = None;
-                out.pts.push(v);
-                out.idx.push(i);
-                out.first.push((v, i));
-                out.last.push((v, i));
-            }
+        let mut o = frame.cmp_height::<K>(v, chain[prev]);
+        if !rising {
+            o = o.reverse();
+        }
+        match o {
+            Ordering::Less => return bad(i),
+            Ordering::Greater => run_dir = None,
             Ordering::Equal => {
                 // Equal height and distinct points: the depths differ (the frame is a similarity).
                 let dir = frame.cmp_depth::<K>(v, chain[prev]);
                 if run_dir.is_some_and(|d| d != dir) {
-                    return Err(SeparationError::NotMonotone {
-                        chain: which,
-                        index: i,
-                    });
+                    return bad(i);
                 }
                 run_dir = Some(dir);
-                if out.first_run.is_none() {
-                    out.first_run = Some(i);
-                }
-                if let Some(l) = out.last.last_mut() {
-                    *l = (v, i);
-                }
-                // Keep the nearer of the run's vertices: the last kept one is the nearest so far.
-                if dir == Ordering::Less {
-                    if let (Some(pt), Some(ix)) = (out.pts.last_mut(), out.idx.last_mut()) {
-                        *pt = v;
-                        *ix = i;
-                    }
-                }
             }
         }
         prev = i;
     }
-    Ok(out)
+    Ok(())
 }

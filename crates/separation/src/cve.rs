@@ -10,7 +10,9 @@ use glam::DVec2;
 use monotone_minima::Matrix;
 use polydist_predicates::{Dist2, Kernel, Sign};
 
-use crate::chain::{prepare_monotone, validate};
+use crate::chain::{EnvEdge, validate};
+use crate::clipped::{Val, cmp_val, resolve_clipped};
+use crate::envelope::prepare;
 use crate::error::{Chain, SeparationError};
 use crate::frame::Frame;
 use crate::param::{Affine, Edge, EdgePoint, Param};
@@ -19,8 +21,9 @@ use crate::sigma::real_edges;
 use crate::wedge::{Apex, apexes};
 
 /// An entry of the CVE matrix: like [`MatrixEntry`](crate::MatrixEntry), with the distance from
-/// the column vertex `q` to the row piece's whole edge `[a, b]` (a true distance between the chains,
-/// never below σ; equal to the piece's distance when the piece realizes σ).
+/// the column vertex `q` to the row piece's edge `[a, b]`, or to the part of it on the envelope when
+/// that part ends at a shadow point. Either is a true distance between the chains, never below σ,
+/// and equal to the piece's distance when the piece realizes σ.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum EdgeEntry {
     /// `d(q, [a, b])`.
@@ -32,25 +35,64 @@ pub enum EdgeEntry {
         /// The row edge's end.
         b: DVec2,
     },
+    /// `d(q, [s, t])`, the part of `[a, b]` (`a` the lower end along `l1 − l0`) between the
+    /// heights of `lo` and `hi`: the row edge passes behind the visible vertex `lo` (below) or
+    /// `hi` (above) of its chain, and only the part between them is on the envelope (Lemma 2);
+    /// `None` is the edge's own end. The shadow points `s`, `t` are never constructed
+    /// (comparisons are exact polynomial signs of degree ≤ 10).
+    ClippedDist {
+        /// The column vertex.
+        q: DVec2,
+        /// The row edge's lower end.
+        a: DVec2,
+        /// The row edge's upper end.
+        b: DVec2,
+        /// The visible vertex whose height bounds the part from below, if not `a`'s own.
+        lo: Option<DVec2>,
+        /// The visible vertex whose height bounds the part from above, if not `b`'s own.
+        hi: Option<DVec2>,
+        /// The separating line's first point.
+        l0: DVec2,
+        /// The separating line's second point (heights grow along `l1 − l0`).
+        l1: DVec2,
+    },
     /// `B + n_q − j`, holding `n_q − j`.
     Penalty(usize),
     /// Not a candidate.
     Infinity,
 }
 
-/// The exact order of [`EdgeEntry`] under `K` (`cmp_dist2`, degree ≤ 6, for two distances).
+fn resolve<K: Kernel>(x: &EdgeEntry) -> Option<Val> {
+    match *x {
+        EdgeEntry::Dist { q, a, b } => Some(Val::Input(Dist2::PointSegment(q, a, b))),
+        EdgeEntry::ClippedDist {
+            q,
+            a,
+            b,
+            lo,
+            hi,
+            l0,
+            l1,
+        } => Some(resolve_clipped::<K>(q, a, b, lo, hi, (l0, l1))),
+        _ => None,
+    }
+}
+
+/// The exact order of [`EdgeEntry`] under `K` (`cmp_dist2`, degree ≤ 6, for two distances to
+/// whole edges; up to degree 10 with shadow points).
 #[must_use]
 pub fn compare_edge_entries<K: Kernel>(x: &EdgeEntry, y: &EdgeEntry) -> Ordering {
-    use EdgeEntry::{Dist, Infinity, Penalty};
-    match (x, y) {
-        (Dist { q, a, b }, Dist { q: r, a: c, b: d }) => K::cmp_dist2(
-            Dist2::PointSegment(*q, *a, *b),
-            Dist2::PointSegment(*r, *c, *d),
-        ),
-        (Penalty(s), Penalty(t)) => s.cmp(t),
-        (Infinity, Infinity) => Ordering::Equal,
-        (Dist { .. }, _) | (Penalty(_), Infinity) => Ordering::Less,
-        _ => Ordering::Greater,
+    use EdgeEntry::Penalty;
+    match (resolve::<K>(x), resolve::<K>(y)) {
+        (Some(u), Some(w)) => cmp_val::<K>(&u, &w),
+        (Some(_), None) => Ordering::Less,
+        (None, Some(_)) => Ordering::Greater,
+        (None, None) => match (x, y) {
+            (Penalty(s), Penalty(t)) => s.cmp(t),
+            (Penalty(_), _) => Ordering::Less,
+            (_, Penalty(_)) => Ordering::Greater,
+            _ => Ordering::Equal,
+        },
     }
 }
 
@@ -84,8 +126,8 @@ enum Cap {
 pub struct CveMatrix<K: Kernel> {
     fp: Frame,
     fq: Frame,
-    /// The real edges of the row chain, between consecutive heights.
-    edges: Vec<(DVec2, DVec2)>,
+    /// The envelope edges of the row chain, between consecutive heights.
+    edges: Vec<EnvEdge>,
     pieces: Vec<Piece>,
     cols: Vec<Apex>,
     piece_bands: Vec<Band<DVec2>>,
@@ -102,8 +144,8 @@ impl<K: Kernel> CveMatrix<K> {
     /// See [`separation_of_chains`](crate::separation_of_chains).
     pub fn new(p: &[DVec2], q: &[DVec2], a: DVec2, b: DVec2) -> Result<Self, SeparationError> {
         let frames = validate::<K>(p, q, a, b)?;
-        let pp = prepare_monotone::<K>(p, frames.p, Chain::P)?;
-        let qq = prepare_monotone::<K>(q, frames.q, Chain::Q)?;
+        let pp = prepare::<K>(p, frames.p, Chain::P)?;
+        let qq = prepare::<K>(q, frames.q, Chain::Q)?;
         let cols = apexes::<K>(&qq, frames.q);
         let ps = pieces::<K>(&pp, frames.p);
         Ok(Self::build(frames.p, frames.q, real_edges(&pp), ps, cols))
@@ -112,7 +154,7 @@ impl<K: Kernel> CveMatrix<K> {
     pub(crate) fn build(
         fp: Frame,
         fq: Frame,
-        edges: Vec<(DVec2, DVec2)>,
+        edges: Vec<EnvEdge>,
         pieces: Vec<Piece>,
         cols: Vec<Apex>,
     ) -> Self {
@@ -150,8 +192,8 @@ impl<K: Kernel> CveMatrix<K> {
 
     fn edge(&self, k: usize) -> Edge {
         Edge {
-            a: self.edges[k].0,
-            b: self.edges[k].1,
+            a: self.edges[k].a,
+            b: self.edges[k].b,
         }
     }
 
@@ -169,14 +211,23 @@ impl<K: Kernel> CveMatrix<K> {
         self.edge(x.edge).is_end::<K>(&x.param, at_end)
     }
 
-    /// Compares the heights of two points of this chain. Heights increase along the rows' edges;
-    /// the end of one edge and the start of the next are at the same height (the same vertex, or
-    /// the two ends of a run perpendicular to the line) and compare equal.
+    /// `true` when `x` is the top (`at_top`) or bottom of its edge's part on the envelope.
+    fn at_range_end(&self, x: &EdgePoint, at_top: bool) -> bool {
+        let r = &self.edges[x.edge];
+        let end = if at_top { r.hi } else { r.lo };
+        self.edge(x.edge).cmp::<K>(&x.param, &end) == Ordering::Equal
+    }
+
+    /// Compares the heights of two points of this chain. Heights increase along the rows' edges
+    /// (within their parts on the envelope); the top of one edge's part and the bottom of the next
+    /// are at the same height (the same vertex, or a visible vertex and a point hidden behind it:
+    /// a vertex at the end of a run perpendicular to the line, or a shadow point) and compare equal.
     fn cmp_points(&self, x: &EdgePoint, y: &EdgePoint) -> Ordering {
         match x.edge.cmp(&y.edge) {
             Ordering::Equal => self.edge(x.edge).cmp::<K>(&x.param, &y.param),
             Ordering::Less => {
-                if x.edge + 1 == y.edge && self.is_end(x, true) && self.is_end(y, false) {
+                if x.edge + 1 == y.edge && self.at_range_end(x, true) && self.at_range_end(y, false)
+                {
                     Ordering::Equal
                 } else {
                     Ordering::Less
@@ -502,8 +553,25 @@ impl<K: Kernel> Matrix for CveMatrix<K> {
         if q_above || piece_below {
             EdgeEntry::Infinity
         } else {
-            let e = self.edge(pc.edge);
-            EdgeEntry::Dist { q, a: e.a, b: e.b }
+            let r = &self.edges[pc.edge];
+            let shadow = |p: &Param| match p {
+                Param::Root(g) => Some(g.c),
+                _ => None,
+            };
+            let (lo, hi) = (shadow(&r.lo), shadow(&r.hi));
+            if lo.is_none() && hi.is_none() {
+                EdgeEntry::Dist { q, a: r.a, b: r.b }
+            } else {
+                EdgeEntry::ClippedDist {
+                    q,
+                    a: r.a,
+                    b: r.b,
+                    lo,
+                    hi,
+                    l0: self.fp.l0,
+                    l1: self.fp.l1,
+                }
+            }
         }
     }
 }

@@ -10,8 +10,9 @@ use monotone_minima::{Matrix, row_minima_by};
 use polydist_polygon::Feature;
 use polydist_predicates::Kernel;
 
-use crate::chain::{Frames, Prepared, prepare_monotone, validate};
+use crate::chain::{Frames, Prepared, check_monotone, validate};
 use crate::construct::vertex_vertex;
+use crate::envelope::prepare;
 use crate::error::{Chain, SeparationError};
 use crate::region::{Place, Region, place, regions};
 use crate::result::{Cvv, CvvStats};
@@ -69,16 +70,18 @@ pub struct CvvMatrix<K: Kernel> {
 }
 
 impl<K: Kernel> CvvMatrix<K> {
-    /// Validates the input and builds the matrix: Lemma 2 (monotone chains), the wedges by two hull
-    /// scans per chain, Lemma 3, and the regions by two pointer scans per chain. `O(n_p + n_q)`
-    /// exact degree-2 tests.
+    /// Validates the input and builds the matrix: Lemma 2 (the perpendicular-visibility envelope of
+    /// each chain; chains need not be monotone: this is the matrix of the CVV step of
+    /// [`separation_of_chains`](crate::separation_of_chains)), the wedges by two hull scans per
+    /// chain, Lemma 3, and the regions by two pointer scans per chain. `O(n_p + n_q)` exact degree-2
+    /// tests after the envelope (`O(n log n)` in the worst case, `O(n)` for monotone chains).
     ///
     /// # Errors
-    /// See [`closest_visible_vertices`].
+    /// See [`separation_of_chains`](crate::separation_of_chains).
     pub fn new(p: &[DVec2], q: &[DVec2], a: DVec2, b: DVec2) -> Result<Self, SeparationError> {
         let frames = validate::<K>(p, q, a, b)?;
-        let pp = prepare_monotone::<K>(p, frames.p, Chain::P)?;
-        let qq = prepare_monotone::<K>(q, frames.q, Chain::Q)?;
+        let pp = prepare::<K>(p, frames.p, Chain::P)?;
+        let qq = prepare::<K>(q, frames.q, Chain::Q)?;
         let rows = apexes::<K>(&pp, frames.p);
         let columns = apexes::<K>(&qq, frames.q);
         Ok(Self::from_parts(frames, &pp, &qq, rows, columns))
@@ -237,6 +240,9 @@ pub fn closest_visible_vertices<K: Kernel>(
     a: DVec2,
     b: DVec2,
 ) -> Result<Cvv, SeparationError> {
+    let frames = validate::<K>(p, q, a, b)?;
+    check_monotone::<K>(p, frames.p, Chain::P)?;
+    check_monotone::<K>(q, frames.q, Chain::Q)?;
     let m = CvvMatrix::<K>::new(p, q, a, b)?;
     let (i, j) = m.best().ok_or(SeparationError::Inconsistent)?;
     let (r, c) = m.apexes_at(i, j);

@@ -59,10 +59,11 @@ pub enum SeparationError {
     /// ambiguous there; pass a line that at most one of the chains touches.
     #[error("both chains touch the separating line; at most one may")]
     BothChainsTouchLine,
-    /// The chain is not monotone with respect to the separating line (its vertices' heights along
-    /// the line neither never decrease nor never increase), or it doubles back on itself within a
-    /// run of vertices at equal height. The envelope step of Lemma 2 for general chains is not
-    /// implemented yet: see `docs/algorithms/separation.md`.
+    /// [`closest_visible_vertices`](crate::closest_visible_vertices) only: the chain is not monotone
+    /// with respect to the separating line (its vertices' heights along the line neither never
+    /// decrease nor never increase), or it doubles back on itself within a run of vertices at equal
+    /// height. The closest *visible* vertices of general chains are not those of their envelopes;
+    /// [`separation_of_chains`](crate::separation_of_chains) accepts general simple chains.
     #[error("chain {chain} is not monotone along the separating line at vertex {index}")]
     NotMonotone {
         /// The chain.
@@ -70,6 +71,24 @@ pub enum SeparationError {
         /// The caller's index of the first vertex where monotonicity fails.
         index: usize,
     },
+    /// The chain was found not to be simple while computing its perpendicular-visibility envelope:
+    /// a vertex lies on another edge, two edges overlap, two vertices coincide, or a closed chain has
+    /// fewer than three distinct vertices. Not every non-simple chain is detected (simplicity is the
+    /// caller's duty); under the `Fast` kernel, inconsistent decisions can also produce this error.
+    #[error("chain {chain} is not simple (found at vertex {index})")]
+    NotSimple {
+        /// The chain.
+        chain: Chain,
+        /// The caller's index of a vertex where the violation was found.
+        index: usize,
+    },
+    /// The two simple polygons are disjoint but their convex hulls meet (interlocked shapes, or one
+    /// polygon in a pocket of the other). Section 2 of Amato's report handles this case with a
+    /// separator `S(P, Q)`, which is not built yet: see `docs/algorithms/separation.md`.
+    #[error(
+        "the convex hulls of the two polygons meet: this case needs Amato's separators, not implemented yet"
+    )]
+    HullsIntersect,
     /// The search found no admissible vertex pair. With an exact kernel this cannot happen (it would
     /// be a bug); with the `Fast` kernel inconsistent decisions can cause it.
     #[error(

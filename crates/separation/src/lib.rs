@@ -7,44 +7,63 @@
 //!
 //! | item | what it is | status |
 //! |---|---|---|
-//! | [`separation_of_chains`] | σ of two chains separated by a line and monotone along it (edges perpendicular to it allowed), with a realizing pair and caller features: CVV + CVE (both ways), `O(n_p + n_q)` | done; agrees with the exact oracle, every test matrix checked for total monotonicity |
-//! | [`closest_visible_vertices`] | CVV of two chains separated by a line and monotone along it (edges perpendicular to the line allowed): Lemma 2, `W()` by hull scans, Lemma 3, `R()`, the tagged matrix `M` and SMAWK, `O(n_p + n_q)` | done |
+//! | [`separation_of_chains`] | σ of two simple chains separated by a line, open or closed (a whole polygon boundary is passed with its first vertex repeated at the end), with a realizing pair and caller features: Lemma 2's envelope, then CVV + CVE (both ways) | done; `O(n log n)` worst case (the envelope), `O(n)` on monotone chains; agrees with the exact oracle, every test matrix checked for total monotonicity |
+//! | [`perpendicular_envelope`] | Lemma 2: the part of a simple chain perpendicularly visible from the line (visible vertices, edges, symbolic shadow points), by divide and conquer | done; `O(n log n)` worst case, `O(n)` on monotone chains |
+//! | [`closest_visible_vertices`] | CVV of two chains separated by a line and monotone along it (edges perpendicular to the line allowed): Lemma 2, `W()` by hull scans, Lemma 3, `R()`, the tagged matrix `M` and SMAWK, `O(n_p + n_q)` | done (monotone chains only: the CVV of general chains is not that of their envelopes) |
 //! | [`CvvMatrix`], [`CveMatrix`], [`MatrixEntry`], [`EdgeEntry`], [`compare_entries`], [`compare_edge_entries`] | the matrices `M` themselves, for verification with `monotone_minima::check_totally_monotone_by` | done |
-//! | [`closest_visible_vertices_brute`], [`separation_brute`] | brute-force twins (test references, benchmark baselines) | done |
-//! | Lemma 2 for chains that are not monotone along the line (the perpendicular-visibility envelope, shadow points), chains with gaps, lines touched by both chains, the disjoint-hull fast path for polygons, section 2's separators | — | **not done**: see `docs/algorithms/separation.md` |
+//! | [`closest_visible_vertices_brute`], [`separation_brute`], [`perpendicular_envelope_brute`] | brute-force twins (test references, benchmark baselines) | done |
+//! | a linear-time envelope, chains with gaps, lines touched by both chains, the disjoint-hull fast path for polygons, section 2's separators | — | **not done**: see `docs/algorithms/separation.md` |
 //!
-//! The restriction to monotone chains is the setting in which the paper states Lemmas 4–7; general
-//! chains are reduced to it by Lemma 2, the step still missing.
+//! Lemma 2 reduces general chains to the setting in which the paper states Lemmas 4–7: a chain
+//! monotone along the line (the envelope, with perpendicular jumps at shadow points).
+//!
+//! # Chains
+//! Edge `i` joins vertices `i` and `i + 1`. Repeated consecutive vertices are dropped (reported
+//! indices are the first of a repeat). A chain whose last vertex equals its first (at least three
+//! distinct vertices) is closed: a polygon `v_0, …, v_{n−1}` is passed as `v_0, …, v_{n−1}, v_0`; its
+//! closing edge is reported as `Edge(n − 1)` and the repeated vertex as `Vertex(0)`. Chains must be
+//! simple (the caller's duty; violations met on the way are [`SeparationError::NotSimple`]).
 //!
 //! # Numbers
-//! Every decision is the sign of a polynomial of degree at most 6 in the input coordinates,
-//! decided by the kernel `K`: degree 2 for orientation, dot and cross signs and vertex–vertex
-//! comparisons; 4 for the order of two constructed points on an edge and for the discriminant of
-//! the `α ≥ 90°` arc; 6 for a constructed point against an arc end and for vertex–edge distance
-//! comparisons. Constructed points (edge breakpoints, arc ends, the points `u^±` on edges) are never
-//! rounded to floats for a decision. The matrix
-//! entries are tagged ([`MatrixEntry`]) and compared exactly; no `f64` sentinel is used. Distances
+//! Every decision is the sign of a polynomial of degree at most 10 in the input coordinates,
+//! decided by the kernel `K`: degree 2 for orientation, dot and cross signs, the envelope and
+//! vertex–vertex comparisons; 4 for the order of two constructed points on an edge and for the
+//! discriminant of the `α ≥ 90°` arc; 6 for a constructed point against an arc end and for
+//! vertex–edge distance comparisons; 6 to 10 for distances to an edge's part ending at a shadow point
+//! (rows of the CVE matrix whose edge passes behind a visible vertex). Constructed points (shadow
+//! points, edge breakpoints, arc ends, the points `u^±` on edges) are never rounded to floats for a
+//! decision. The matrix entries are tagged ([`MatrixEntry`]) and compared exactly; no `f64` sentinel is used. Distances
 //! are constructed once the pair is chosen: the exact squared distance rounded once, then its square
 //! root (within 1 ulp).
 #![forbid(unsafe_code)]
 
 mod brute;
 mod chain;
+mod clipped;
 mod construct;
 mod cve;
 mod cvv;
+mod envelope;
 mod error;
 mod frame;
 mod param;
 mod pieces;
+mod polygon;
 mod region;
 mod result;
 mod sigma;
+mod simple_distance;
 mod wedge;
 
 pub use brute::{closest_visible_vertices_brute, separation_brute};
 pub use cve::{CveMatrix, EdgeEntry, compare_edge_entries};
 pub use cvv::{CvvMatrix, MatrixEntry, closest_visible_vertices, compare_entries};
+pub use envelope::{Envelope, perpendicular_envelope, perpendicular_envelope_brute};
 pub use error::{Chain, SeparationError};
+pub use polygon::{
+    BoundaryPiece, Intersection, PolygonSeparation, Route, intersection, polygon_separation_brute,
+    separation, separation_of_disjoint,
+};
 pub use result::{ChainSeparation, ClosestPair, Cvv, CvvStats, SeparationStats};
 pub use sigma::separation_of_chains;
+pub use simple_distance::{BoundaryPoint, PointToPolygon, point_to_polygon, segment_to_polygon};

@@ -104,6 +104,9 @@ pub(crate) fn pieces<K: Kernel>(prep: &Prepared, frame: Frame) -> Vec<Piece> {
             Edge { a, b }
         })
         .collect();
+    // The part of each edge on the envelope: a shadow point or hidden run vertex at either end is
+    // at the height of the visible vertex and deeper.
+    let ranges: Vec<(Param, Param)> = prep.edges.iter().map(|r| (r.lo, r.hi)).collect();
     // Upper spans per edge (ascending), from the top-to-bottom scan. For the edge below vertex i,
     // the hull pairs popped at its bottom end are walked before vertex i pops: when that end is a
     // hidden run vertex (deeper than `pts[i]` at the same height) they are a prefix of the pairs
@@ -113,16 +116,18 @@ pub(crate) fn pieces<K: Kernel>(prep: &Prepared, frame: Frame) -> Vec<Piece> {
     for i in (0..n).rev() {
         if i + 1 < n {
             let e = &edges[i];
+            let (lo, hi) = ranges[i];
             let mut desc: Vec<Span> = Vec::new();
-            let mut top = Param::End;
+            let mut top = hi;
             let mut cur = stack.last().map(|&c| pts[c]);
             for t in (1..stack.len()).rev() {
                 let (cm, cm1) = (pts[stack[t]], pts[stack[t - 1]]);
-                let sa = frame.orient::<K>(e.a, cm, cm1);
+                let pops = frame.orient_x_first(cm, cm1);
+                let sa = e.eval::<K>(&pops, &lo);
                 if sa == Sign::Negative {
                     break; // the pair does not pop at the bottom end
                 }
-                let sb = frame.orient::<K>(e.b, cm, cm1);
+                let sb = e.eval::<K>(&pops, &hi);
                 if sb != Sign::Negative {
                     cur = Some(cm1); // pops on all of the current range
                     continue;
@@ -140,7 +145,7 @@ pub(crate) fn pieces<K: Kernel>(prep: &Prepared, frame: Frame) -> Vec<Piece> {
                 cur = Some(cm1);
             }
             desc.push(Span {
-                bot: Param::Start,
+                bot: lo,
                 top,
                 tangent: cur,
             });
@@ -162,16 +167,18 @@ pub(crate) fn pieces<K: Kernel>(prep: &Prepared, frame: Frame) -> Vec<Piece> {
     for i in 0..n {
         if i >= 1 {
             let e = &edges[i - 1];
+            let (lo, hi) = ranges[i - 1];
             let mut asc: Vec<Span> = Vec::new();
-            let mut bot = Param::Start;
+            let mut bot = lo;
             let mut cur = stack.last().map(|&d| pts[d]);
             for t in (1..stack.len()).rev() {
                 let (dm, dm1) = (pts[stack[t]], pts[stack[t - 1]]);
-                let sb = frame.orient::<K>(e.b, dm, dm1);
+                let pops = frame.orient_x_first(dm, dm1);
+                let sb = e.eval::<K>(&pops, &hi);
                 if sb == Sign::Positive {
                     break;
                 }
-                let sa = frame.orient::<K>(e.a, dm, dm1);
+                let sa = e.eval::<K>(&pops, &lo);
                 if sa != Sign::Positive {
                     cur = Some(dm1);
                     continue;
@@ -190,7 +197,7 @@ pub(crate) fn pieces<K: Kernel>(prep: &Prepared, frame: Frame) -> Vec<Piece> {
             }
             asc.push(Span {
                 bot,
-                top: Param::End,
+                top: hi,
                 tangent: cur,
             });
             lower[i - 1] = depth_rule::<K>(e, frame, asc);
@@ -209,14 +216,21 @@ pub(crate) fn pieces<K: Kernel>(prep: &Prepared, frame: Frame) -> Vec<Piece> {
     for (k, e) in edges.iter().enumerate() {
         let (us, ls) = (&upper[k], &lower[k]);
         let (mut iu, mut il) = (0, 0);
-        let mut bot = Param::Start;
+        let mut bot = ranges[k].0;
         // Each step advances at least one list: at most |us| + |ls| steps.
         while iu < us.len() && il < ls.len() {
             let (tu, tl) = (us[iu].top, ls[il].top);
             let o = e.cmp::<K>(&tu, &tl);
             let top = if o == Ordering::Greater { tl } else { tu };
             if e.cmp::<K>(&bot, &top) == Ordering::Less {
-                clip_and_push::<K>(&mut out, k, e, bot, top, us[iu].tangent, ls[il].tangent);
+                clip_and_push::<K>(
+                    &mut out,
+                    k,
+                    e,
+                    ranges[k],
+                    (bot, top),
+                    (us[iu].tangent, ls[il].tangent),
+                );
                 bot = top;
             }
             if o != Ordering::Greater {
@@ -235,10 +249,9 @@ fn clip_and_push<K: Kernel>(
     out: &mut Vec<Piece>,
     k: usize,
     e: &Edge,
-    bot: Param,
-    top: Param,
-    hi: Option<DVec2>,
-    lo: Option<DVec2>,
+    range: (Param, Param),
+    (bot, top): (Param, Param),
+    (hi, lo): (Option<DVec2>, Option<DVec2>),
 ) {
     let piece = out.len();
     let (Some(h), Some(l)) = (hi, lo) else {
@@ -307,8 +320,11 @@ fn clip_and_push<K: Kernel>(
     // the piece's wedge (built from the tangents of the edge's interior) is not the vertex's own: as a
     // row it would reject admissible `u` and, through the cap of the `R()` scan, starve the rows
     // below (found by the soak test, see docs). Dropped.
+    // The same holds at a shadow point or hidden vertex ending the edge's part on the envelope: it
+    // is strictly dominated by the visible vertex at its height.
     if e.cmp::<K>(&new_bot, &new_top) == Ordering::Equal
-        && (e.is_end::<K>(&new_bot, false) || e.is_end::<K>(&new_top, true))
+        && (e.cmp::<K>(&new_bot, &range.0) == Ordering::Equal
+            || e.cmp::<K>(&new_top, &range.1) == Ordering::Equal)
     {
         return;
     }
@@ -396,14 +412,7 @@ mod tests {
         for n in [2usize, 3, 5, 9, 16, 30] {
             for _ in 0..200 {
                 let pts = chain(&mut rng, n);
-                let prep = Prepared {
-                    idx: (0..pts.len()).collect(),
-                    pts: pts.clone(),
-                    rising: true,
-                    first_run: None,
-                    first: pts.iter().enumerate().map(|(i, &v)| (v, i)).collect(),
-                    last: pts.iter().enumerate().map(|(i, &v)| (v, i)).collect(),
-                };
+                let prep = Prepared::from_rising(&pts);
                 let ps = pieces::<Exact>(&prep, P);
                 // Pieces are in order along the chain and well formed.
                 for w in ps.windows(2) {
@@ -469,5 +478,107 @@ mod tests {
             }
         }
         assert!(checked > 2000, "{checked}");
+    }
+
+    /// The same checks on the envelopes of general simple chains (random 2-opt polygons, closed or
+    /// cut into open sub-chains): pieces lie in the envelope's parts of edges (which may end at
+    /// shadow points), with the brute-force tangents among the visible vertices.
+    #[test]
+    fn pieces_of_envelopes_of_general_chains() {
+        use crate::envelope::prepare;
+        use crate::error::Chain;
+        let mut rng = SplitMix64::new(32);
+        let mut checked = 0;
+        let mut shadows = 0;
+        for n in [3usize, 5, 8, 13, 21] {
+            for _ in 0..60 {
+                let poly: Vec<DVec2> = polydist_oracle::two_opt(&mut rng, n)
+                    .into_iter()
+                    .map(|v| DVec2::new(v.x + 1.0, v.y))
+                    .collect();
+                let chain: Vec<DVec2> = if rng.coin() {
+                    let mut c = poly.clone();
+                    c.push(poly[0]);
+                    c
+                } else {
+                    let (s0, len) = (rng.index(n), 1 + rng.index(n));
+                    (0..len).map(|t| poly[(s0 + t) % n]).collect()
+                };
+                let prep = prepare::<Exact>(&chain, P, Chain::P).unwrap();
+                let pts = &prep.pts;
+                let ps = pieces::<Exact>(&prep, P);
+                for w in ps.windows(2) {
+                    assert!(w[0].edge <= w[1].edge);
+                }
+                let edge = |k: usize| {
+                    let (a, b, _, _) = prep.edge(k);
+                    Edge { a, b }
+                };
+                for k in 0..prep.edges.len() {
+                    let r = &prep.edges[k];
+                    shadows += usize::from(matches!(r.lo, Param::Root(_)))
+                        + usize::from(matches!(r.hi, Param::Root(_)));
+                }
+                for pc in &ps {
+                    let e = edge(pc.edge);
+                    let r = &prep.edges[pc.edge];
+                    assert_ne!(e.cmp::<Exact>(&pc.bot, &pc.top), Ordering::Greater);
+                    assert_ne!(e.cmp::<Exact>(&r.lo, &pc.bot), Ordering::Greater);
+                    assert_ne!(e.cmp::<Exact>(&pc.top, &r.hi), Ordering::Greater);
+                    let (t0, t1) = (approx(&e, &pc.bot), approx(&e, &pc.top));
+                    if t1 - t0 < 1e-6 {
+                        continue;
+                    }
+                    for f in [0.25, 0.5, 0.75] {
+                        let t = ((t0 + f * (t1 - t0)) * 1024.0).round() / 1024.0;
+                        if t <= t0 + 1e-9 || t >= t1 - 1e-9 {
+                            continue;
+                        }
+                        let x = e.a + (e.b - e.a) * t;
+                        assert_eq!(
+                            pc.hi,
+                            brute(pts, pc.edge, x, true),
+                            "h of {pc:?} in {chain:?}"
+                        );
+                        assert_eq!(
+                            pc.lo,
+                            brute(pts, pc.edge, x, false),
+                            "l of {pc:?} in {chain:?}"
+                        );
+                        checked += 1;
+                    }
+                }
+                // Every sampled envelope point with α clearly ≥ 90° lies in some piece.
+                for k in 0..prep.edges.len() {
+                    let e = edge(k);
+                    let r = &prep.edges[k];
+                    let (t0, t1) = (approx(&e, &r.lo), approx(&e, &r.hi));
+                    for s in 1..32 {
+                        let t = ((t0 + (t1 - t0) * s as f64 / 32.0) * 1024.0).round() / 1024.0;
+                        if t <= t0 + 1e-9 || t >= t1 - 1e-9 {
+                            continue;
+                        }
+                        let x = e.a + (e.b - e.a) * t;
+                        let (h, l) = (brute(pts, k, x, true), brute(pts, k, x, false));
+                        let keep = match (h, l) {
+                            (Some(h), Some(l)) => (h - x).dot(l - x) < -1e-9,
+                            _ => true,
+                        };
+                        if keep {
+                            assert!(
+                                ps.iter().any(|pc| pc.edge == k
+                                    && approx(&e, &pc.bot) <= t + 1e-9
+                                    && t <= approx(&e, &pc.top) + 1e-9),
+                                "t={t} on edge {k} of {chain:?} is in no piece: {ps:?}"
+                            );
+                        }
+                    }
+                }
+            }
+        }
+        assert!(
+            checked > 500 && shadows > 50,
+            "{checked} samples, {shadows} shadow ends"
+        );
     }
 }

@@ -110,7 +110,8 @@ pub(crate) fn place<K: Kernel>(fu: Frame, b: DVec2, r: &Region, z: DVec2) -> Pla
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::chain::{prepare_monotone, validate};
+    use crate::chain::validate;
+    use crate::envelope::prepare;
     use crate::error::Chain;
     use crate::wedge::apexes;
     use polydist_oracle::SplitMix64;
@@ -171,10 +172,8 @@ mod tests {
                 let p = side(&mut rng, n, 1.0);
                 let q = side(&mut rng, n, -1.0);
                 let f = validate::<Exact>(&p, &q, a, b).unwrap();
-                let pa =
-                    apexes::<Exact>(&prepare_monotone::<Exact>(&p, f.p, Chain::P).unwrap(), f.p);
-                let qa =
-                    apexes::<Exact>(&prepare_monotone::<Exact>(&q, f.q, Chain::Q).unwrap(), f.q);
+                let pa = apexes::<Exact>(&prepare::<Exact>(&p, f.p, Chain::P).unwrap(), f.p);
+                let qa = apexes::<Exact>(&prepare::<Exact>(&q, f.q, Chain::Q).unwrap(), f.q);
                 for (bs, fb, us, fu) in [(&pa, f.p, &qa, f.q), (&qa, f.q, &pa, f.p)] {
                     let r = regions::<Exact>(bs, fb, us, fu);
                     let up: Vec<_> = r.iter().map(|r| r.up).collect();

@@ -5,7 +5,8 @@ use polydist_polygon::Feature;
 
 /// A closest pair between the chains `P` and `Q`, in the caller's indices: `Feature::Vertex(i)` is
 /// the caller's vertex `i` of that chain, `Feature::Edge(i)` the segment from vertex `i` to vertex
-/// `i + 1` (chains are open: there is no closing edge).
+/// `i + 1`. A closed chain (last vertex = first) reports its repeated last vertex as `Vertex(0)`; its
+/// closing edge, from vertex `n − 1` to the repeat at index `n`, is `Edge(n − 1)`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ClosestPair {
     /// The distance, rounded from the exact value (see `construct` error bounds in the crate docs).

@@ -8,10 +8,11 @@ use monotone_minima::row_minima_by;
 use polydist_polygon::Feature;
 use polydist_predicates::{Dist2, Kernel, Sign};
 
-use crate::chain::{Prepared, prepare_monotone, validate};
+use crate::chain::{EnvEdge, Prepared, validate};
 use crate::construct::{vertex_edge, vertex_vertex};
 use crate::cve::{CveMatrix, EdgeEntry, compare_edge_entries};
 use crate::cvv::CvvMatrix;
+use crate::envelope::prepare;
 use crate::error::{Chain, SeparationError};
 use crate::pieces::pieces;
 use crate::result::{ChainSeparation, ClosestPair, SeparationStats};
@@ -51,7 +52,7 @@ fn cve<K: Kernel>(m: &CveMatrix<K>, edges: &Prepared, p_side: bool) -> Option<Ca
     let mut best: Option<(usize, usize, EdgeEntry)> = None;
     for (i, &j) in minima.iter().enumerate() {
         let e = monotone_minima::Matrix::entry(m, i, j);
-        if !matches!(e, EdgeEntry::Dist { .. }) {
+        if !matches!(e, EdgeEntry::Dist { .. } | EdgeEntry::ClippedDist { .. }) {
             continue;
         }
         if best
@@ -77,26 +78,38 @@ fn cve<K: Kernel>(m: &CveMatrix<K>, edges: &Prepared, p_side: bool) -> Option<Ca
     })
 }
 
-/// The separation `σ(P, Q)` of two polygonal chains `p` and `q` separated by the line through `a`
-/// and `b` and monotone along it, with a realizing pair of points and their features in
-/// the caller's indices (Amato 1992, section 3, Theorem 2; SMAWK: Aggarwal, Klawe, Moran, Shor,
-/// Wilber 1987).
+/// The separation `σ(P, Q)` of two simple polygonal chains `p` and `q` separated by the line
+/// through `a` and `b`, with a realizing pair of points and their features in the caller's indices
+/// (Amato 1992, section 3, Lemma 2 and Theorem 2; SMAWK: Aggarwal, Klawe, Moran, Shor, Wilber 1987).
 ///
-/// `σ = min{CVV(P, Q), CVE(P_e, Q_v), CVE(Q_e, P_v)}`: the closest visible vertices (see
-/// [`closest_visible_vertices`](crate::closest_visible_vertices)), and twice the vertex–edge search:
-/// the edges of one chain are cut into pieces on which the tangent points `h()`, `l()` are constant
-/// (breakpoints found by the hull scans) and clipped to the arc `α ≥ 90°`, their regions `R()` and
-/// those of the other chain's vertices are found by pointer scans, and the tagged matrix `M` is
-/// searched with SMAWK. Constructed points (breakpoints, arc ends, the points `u^±` on edges) stay
-/// symbolic; every decision is the sign of a polynomial of degree ≤ 6 in the input coordinates.
+/// Each chain is open (edge `i` joins vertices `i` and `i + 1`) or closed: a polygon boundary
+/// `v_0, …, v_{n−1}` is passed as `v_0, …, v_{n−1}, v_0` (at least three distinct vertices); its
+/// closing edge is reported as `Edge(n − 1)` and the repeated vertex as `Vertex(0)`. Chains need not
+/// be monotone along the line. Repeated consecutive vertices are dropped (reported indices are the
+/// first of a repeat).
+///
+/// Lemma 2 first reduces each chain to its perpendicular-visibility envelope (see
+/// [`perpendicular_envelope`](crate::perpendicular_envelope)): the visible vertices and the parts of
+/// edges between them, cut at symbolic shadow points where an edge passes behind a visible vertex.
+/// Then `σ = min{CVV(P°, Q°), CVE(P°_e, Q°_v), CVE(Q°_e, P°_v)}`: the closest vertex pair by the
+/// CVV search, and twice the vertex–edge search: the envelope's edges are cut into pieces on which
+/// the tangent points `h()`, `l()` are constant (breakpoints found by the hull scans) and clipped to
+/// the arc `α ≥ 90°`, their regions `R()` and those of the other chain's vertices are found by
+/// pointer scans, and the tagged matrix `M` is searched with SMAWK. Constructed points (shadow points,
+/// breakpoints, arc ends, the points `u^±` on edges) stay symbolic; every decision is the sign of a
+/// polynomial of degree ≤ 10 in the input coordinates.
 ///
 /// # Complexity
-/// `O(n_p + n_q)` time and predicate calls.
+/// `O(n log n)` time and predicate calls in the worst case, for the envelope (divide and
+/// conquer); `O(n_p + n_q)` for chains monotone along the line, and every step after the envelope is
+/// `O(n_p + n_q)`.
 ///
 /// # Errors
-/// Those of [`closest_visible_vertices`](crate::closest_visible_vertices). Edges perpendicular to the
-/// line are accepted: their points other than the nearest vertex are not perpendicularly visible, and
-/// the adjacent edges end at the hidden vertices of the run.
+/// [`SeparationError`]: empty chains, invalid coordinates or line, a line that does not separate
+/// the chains (a vertex strictly on the wrong side) or that both chains touch,
+/// [`SeparationError::NotSimple`] when a chain is found not to be simple (simplicity is the caller's
+/// duty: not every violation is detected), and (Fast kernel only) [`SeparationError::Inconsistent`]
+/// or `NotSimple` from inconsistent decisions.
 ///
 /// # Examples
 /// ```
@@ -112,6 +125,18 @@ fn cve<K: Kernel>(m: &CveMatrix<K>, edges: &Prepared, p_side: bool) -> Option<Ca
 /// // The vertex (-0.5, 1.5) of Q is nearest to the interior of P's edge from (3, 1) to (0.5, 3).
 /// assert_eq!((s.pair.feature_p, s.pair.feature_q), (Feature::Edge(1), Feature::Vertex(1)));
 /// assert_eq!(s.pair.point_q, DVec2::new(-0.5, 1.5));
+///
+/// // A closed square right of the line x = 0, against a vertex: the closing edge is Edge(3).
+/// let square = [
+///     DVec2::new(1.0, 0.0),
+///     DVec2::new(3.0, 0.0),
+///     DVec2::new(3.0, 2.0),
+///     DVec2::new(1.0, 2.0),
+///     DVec2::new(1.0, 0.0),
+/// ];
+/// let s = separation_of_chains::<Robust>(&square, &[DVec2::new(-1.0, 1.0)], DVec2::ZERO, DVec2::Y)?;
+/// assert_eq!(s.pair.feature_p, Feature::Edge(3));
+/// assert_eq!(s.pair.distance, 2.0);
 /// # Ok::<(), polydist_separation::SeparationError>(())
 /// ```
 pub fn separation_of_chains<K: Kernel>(
@@ -121,8 +146,8 @@ pub fn separation_of_chains<K: Kernel>(
     b: DVec2,
 ) -> Result<ChainSeparation, SeparationError> {
     let frames = validate::<K>(p, q, a, b)?;
-    let pp = prepare_monotone::<K>(p, frames.p, Chain::P)?;
-    let qq = prepare_monotone::<K>(q, frames.q, Chain::Q)?;
+    let pp = prepare::<K>(p, frames.p, Chain::P)?;
+    let qq = prepare::<K>(q, frames.q, Chain::Q)?;
     let pa = apexes::<K>(&pp, frames.p);
     let qa = apexes::<K>(&qq, frames.q);
     let cvv = CvvMatrix::<K>::from_parts(frames, &pp, &qq, pa.clone(), qa.clone());
@@ -155,14 +180,9 @@ pub fn separation_of_chains<K: Kernel>(
     })
 }
 
-/// The real edges of a prepared chain, between consecutive heights.
-pub(crate) fn real_edges(pp: &Prepared) -> Vec<(DVec2, DVec2)> {
-    (0..pp.pts.len().saturating_sub(1))
-        .map(|k| {
-            let (a, b, _, _) = pp.edge(k);
-            (a, b)
-        })
-        .collect()
+/// The envelope edges of a prepared chain, between consecutive heights.
+pub(crate) fn real_edges(pp: &Prepared) -> Vec<EnvEdge> {
+    pp.edges.clone()
 }
 
 /// The realizing points and caller features of a candidate.

@@ -207,14 +207,7 @@ mod tests {
         for n in [3usize, 6, 12, 25] {
             for _ in 0..150 {
                 let pts = chain(&mut rng, n);
-                let prep = Prepared {
-                    idx: (0..pts.len()).collect(),
-                    pts: pts.clone(),
-                    rising: true,
-                    first_run: None,
-                    first: pts.iter().enumerate().map(|(i, &v)| (v, i)).collect(),
-                    last: pts.iter().enumerate().map(|(i, &v)| (v, i)).collect(),
-                };
+                let prep = Prepared::from_rising(&pts);
                 let kept: Vec<usize> = apexes::<Exact>(&prep, P).iter().map(|a| a.idx).collect();
                 let up = upper_tangents::<Exact>(&pts, P);
                 let lo = lower_tangents::<Exact>(&pts, P);

@@ -156,3 +156,41 @@ pub(crate) fn collinear(n: usize, rot: (i64, i64)) -> Case {
     }
     frame_case(&p, &q, rot, DVec2::ZERO, format!("collinear n={n}"))
 }
+
+/// `true` when the chain (repeated consecutive vertices ignored; closed when its last vertex equals
+/// its first) is simple: non-adjacent edges do not meet and adjacent edges meet only at their common
+/// vertex. Exact (oracle), `O(n²)`.
+pub(crate) fn simple_chain(c: &[DVec2]) -> bool {
+    use polydist_oracle::{segments_intersect, sign_orient};
+    use polydist_predicates::Kernel;
+    let mut v: Vec<DVec2> = Vec::new();
+    for &x in c {
+        if v.last() != Some(&x) {
+            v.push(x);
+        }
+    }
+    let closed = v.len() >= 2 && v.first() == v.last();
+    if closed && v.len() < 4 {
+        return false;
+    }
+    let m = v.len().saturating_sub(1); // edges
+    for i in 0..m {
+        for j in i + 1..m {
+            let (a, b, c, d) = (v[i], v[i + 1], v[j], v[j + 1]);
+            let adjacent = j == i + 1 || (closed && i == 0 && j == m - 1);
+            if adjacent {
+                // Shared vertex s; the two edges must not overlap (fold back over each other).
+                let (s, x, y) = if j == i + 1 { (b, a, d) } else { (a, b, c) };
+                if sign_orient(s, x, y) == core::cmp::Ordering::Equal
+                    && polydist_predicates::Exact::dot_sign(s, x, s, y)
+                        == polydist_predicates::Sign::Positive
+                {
+                    return false;
+                }
+            } else if segments_intersect(a, b, c, d) {
+                return false;
+            }
+        }
+    }
+    true
+}

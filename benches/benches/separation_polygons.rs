@@ -1,0 +1,240 @@
+//! Separation of two whole simple polygons with disjoint convex hulls (Amato 1992, section 2's fast
+//! path into section 3) beside the brute-force twin and the peers, `N` vertices in all:
+//!
+//! - `polygons/stars`: two spiky star-shaped polygons (alternating radii 1 and 0.35–0.65) side by side;
+//! - `polygons/spirals`: two double-walled spirals side by side;
+//! - `polygons/combs`: two combs whose teeth face each other tip to tip (not interleaved);
+//! - `polygons/sawteeth`: two saw-tooth slabs facing each other, the tips of one opposite the notches
+//!   of the other: the closest hull features are lids, so section 3 runs (the others mostly end at
+//!   the hull shortcut).
+//!
+//! Series, per `N`:
+//! - `validate`: building both `SimplePolygon`s (exact simplicity sweep), which a caller does once;
+//! - `intersection`: the intersection check alone (`intersection::<Robust>`, `O(N log N)`);
+//! - `query_fast`, `query_robust`, `query_exact`: `separation_of_disjoint::<K>` (the query alone;
+//!   Exact up to 4,096);
+//! - `brute_robust`: `polygon_separation_brute::<Robust>` (`Θ(nm)`, up to 4,096);
+//! - `parry_query`: parry2d-f64 `query::distance` between two prebuilt closed `Polyline`s (BVH);
+//! - `parry_build_query`: building both polylines and the query;
+//! - `geo`: geo's `Euclidean.distance(&Polygon, &Polygon)` (up to 4,096: it takes seconds beyond).
+//!
+//! Before timing, every peer's distance is checked against polydist's (relative 1e-9). Run:
+//! `cargo bench -p polydist-benches --bench separation_polygons`. Figures only.
+
+use std::f64::consts::TAU;
+use std::hint::black_box;
+use std::time::Duration;
+
+use criterion::{BenchmarkGroup, BenchmarkId, Criterion, criterion_main, measurement::WallTime};
+use geo::{Distance, Euclidean, LineString, Polygon};
+use glam::DVec2;
+use parry2d_f64::math::{Pose, Vector};
+use parry2d_f64::query;
+use parry2d_f64::shape::Polyline;
+use polydist_oracle::SplitMix64;
+use polydist_polygon::SimplePolygon;
+use polydist_predicates::{Exact, Fast, Kernel, Robust};
+use polydist_separation::{intersection, polygon_separation_brute, separation_of_disjoint};
+
+/// Total vertices.
+const SIZES: [usize; 6] = [64, 512, 4096, 32_768, 131_072, 1_048_576];
+const SMALL_MAX: usize = 4096;
+
+fn configure(group: &mut BenchmarkGroup<'_, WallTime>) {
+    group
+        .sample_size(10)
+        .warm_up_time(Duration::from_millis(300))
+        .measurement_time(Duration::from_millis(1500));
+}
+
+/// A spiky star of `n` vertices around `c`: angles `2πk/n`, radius 1 at even `k` and a random
+/// radius in `[0.35, 0.65]` at odd `k` (star-shaped, hence simple).
+fn star(rng: &mut SplitMix64, n: usize, c: DVec2) -> Vec<DVec2> {
+    (0..n)
+        .map(|k| {
+            let t = TAU * k as f64 / n as f64;
+            let r = if k % 2 == 0 {
+                1.0
+            } else {
+                0.35 + 0.3 * rng.unit_f64()
+            };
+            c + DVec2::new(t.cos(), t.sin()) * r
+        })
+        .collect()
+}
+
+/// Two polygons, the second moved right of the first's bounding box by `gap`.
+fn side_by_side(p: Vec<DVec2>, q: &[DVec2], gap: f64) -> (Vec<DVec2>, Vec<DVec2>) {
+    let max_x = p.iter().map(|v| v.x).fold(f64::NEG_INFINITY, f64::max);
+    let min_x = q.iter().map(|v| v.x).fold(f64::INFINITY, f64::min);
+    let dx = max_x - min_x + gap;
+    (p, q.iter().map(|&v| v + DVec2::new(dx, 0.0)).collect())
+}
+
+fn stars(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
+    let mut rng = SplitMix64::new(0x57a5 ^ n as u64);
+    let p = star(&mut rng, n / 2, DVec2::ZERO);
+    let q = star(&mut rng, n / 2, DVec2::ZERO);
+    side_by_side(p, &q, 0.25)
+}
+
+fn spirals(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
+    // `spiral(per_turn, turns)` has 2 (per_turn · turns + 1) vertices.
+    let turns = 4;
+    let per_turn = ((n / 2) / (2 * turns as usize)).max(3) as u32;
+    let s = polydist_oracle::spiral(per_turn, turns);
+    side_by_side(s.clone(), &s, 0.5)
+}
+
+fn combs(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
+    let teeth = (n / 8).max(1);
+    let a = polydist_oracle::comb(teeth, 5, 1);
+    // The second comb, teeth down, its tips one unit above the first's.
+    let top = a.iter().map(|v| v.y).fold(f64::NEG_INFINITY, f64::max);
+    let b: Vec<DVec2> = a
+        .iter()
+        .rev()
+        .map(|v| DVec2::new(v.x, 2.0 * top + 1.0 - v.y))
+        .collect();
+    (a, b)
+}
+
+/// A slab `[0, 4] × [0, h]` with `t` saw teeth on its right side (tips at `x = 5`), and its mirror
+/// image right of it, shifted by half a tooth so that tips face notches, `1/4` beyond the tips.
+fn sawteeth(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
+    let t = (n / 4).max(1);
+    let mut p = vec![DVec2::new(0.0, 0.0), DVec2::new(4.0, 0.0)];
+    for k in 0..t {
+        let y = 2.0 * k as f64;
+        p.push(DVec2::new(5.0, y + 1.0));
+        p.push(DVec2::new(4.0, y + 2.0));
+    }
+    p.push(DVec2::new(0.0, 2.0 * t as f64));
+    // The mirror image x ↦ 10.25 − x, moved up by one (tips opposite notches), counter-clockwise.
+    let q: Vec<DVec2> = p
+        .iter()
+        .rev()
+        .map(|v| DVec2::new(10.25 - v.x, v.y + 1.0))
+        .collect();
+    (p, q)
+}
+
+fn polyline(c: &[DVec2]) -> Polyline {
+    let mut pts: Vec<Vector> = c.iter().map(|v| Vector::new(v.x, v.y)).collect();
+    pts.push(pts[0]);
+    Polyline::new(pts, None)
+}
+
+fn parry(p: &Polyline, q: &Polyline) -> f64 {
+    let id = Pose::identity();
+    query::distance(&id, p, &id, q).expect("supported")
+}
+
+fn geo_polygon(c: &[DVec2]) -> Polygon<f64> {
+    Polygon::new(
+        LineString::from(c.iter().map(|v| (v.x, v.y)).collect::<Vec<_>>()),
+        vec![],
+    )
+}
+
+fn query<K: Kernel>(p: &SimplePolygon, q: &SimplePolygon) -> f64 {
+    separation_of_disjoint::<K>(p, q)
+        .expect("disjoint hulls")
+        .distance()
+}
+
+fn run(c: &mut Criterion, name: &str, make: fn(usize) -> (Vec<DVec2>, Vec<DVec2>)) {
+    let mut group = c.benchmark_group(name);
+    configure(&mut group);
+    for n in SIZES {
+        let (a, b) = make(n);
+        let (p, q) = (
+            SimplePolygon::try_new(&a).expect("simple"),
+            SimplePolygon::try_new(&b).expect("simple"),
+        );
+        assert!(intersection::<Robust>(&p, &q).is_none(), "{name}: disjoint");
+        let d = query::<Robust>(&p, &q);
+        let rel = |x: f64| ((x - d) / d).abs();
+        let (pp, pq) = (polyline(&a), polyline(&b));
+        assert!(rel(parry(&pp, &pq)) < 1e-9, "{name} n={n}: parry disagrees");
+        if n <= SMALL_MAX {
+            let brute = polygon_separation_brute::<Robust>(&p, &q)
+                .expect("valid")
+                .distance();
+            assert!(rel(brute) < 1e-12, "{name} n={n}: brute disagrees");
+            let g = Euclidean.distance(&geo_polygon(&a), &geo_polygon(&b));
+            assert!(rel(g) < 1e-9, "{name} n={n}: geo disagrees");
+        }
+        group.bench_with_input(BenchmarkId::new("validate", n), &(&a, &b), |bch, (a, b)| {
+            bch.iter(|| {
+                let p = SimplePolygon::try_new(black_box(a)).expect("simple");
+                let q = SimplePolygon::try_new(black_box(b)).expect("simple");
+                (p.len(), q.len())
+            })
+        });
+        group.bench_with_input(
+            BenchmarkId::new("intersection", n),
+            &(&p, &q),
+            |bch, (p, q)| bch.iter(|| intersection::<Robust>(black_box(p), black_box(q))),
+        );
+        group.bench_with_input(
+            BenchmarkId::new("query_fast", n),
+            &(&p, &q),
+            |bch, (p, q)| bch.iter(|| query::<Fast>(black_box(p), black_box(q))),
+        );
+        group.bench_with_input(
+            BenchmarkId::new("query_robust", n),
+            &(&p, &q),
+            |bch, (p, q)| bch.iter(|| query::<Robust>(black_box(p), black_box(q))),
+        );
+        if n <= SMALL_MAX {
+            group.bench_with_input(
+                BenchmarkId::new("query_exact", n),
+                &(&p, &q),
+                |bch, (p, q)| bch.iter(|| query::<Exact>(black_box(p), black_box(q))),
+            );
+            group.bench_with_input(
+                BenchmarkId::new("brute_robust", n),
+                &(&p, &q),
+                |bch, (p, q)| {
+                    bch.iter(|| {
+                        polygon_separation_brute::<Robust>(black_box(p), black_box(q))
+                            .expect("valid")
+                            .distance()
+                    })
+                },
+            );
+            let (ga, gb) = (geo_polygon(&a), geo_polygon(&b));
+            group.bench_with_input(BenchmarkId::new("geo", n), &(ga, gb), |bch, (p, q)| {
+                bch.iter(|| Euclidean.distance(black_box(p), black_box(q)))
+            });
+        }
+        group.bench_with_input(
+            BenchmarkId::new("parry_query", n),
+            &(pp, pq),
+            |bch, (p, q)| bch.iter(|| parry(black_box(p), black_box(q))),
+        );
+        group.bench_with_input(
+            BenchmarkId::new("parry_build_query", n),
+            &(&a, &b),
+            |bch, (a, b)| {
+                bch.iter(|| {
+                    let (p, q) = (polyline(black_box(a)), polyline(black_box(b)));
+                    parry(&p, &q)
+                })
+            },
+        );
+    }
+    group.finish();
+}
+
+fn benches() {
+    let mut c = Criterion::default().configure_from_args();
+    run(&mut c, "polygons/stars", stars);
+    run(&mut c, "polygons/spirals", spirals);
+    run(&mut c, "polygons/combs", combs);
+    run(&mut c, "polygons/sawteeth", sawteeth);
+    c.final_summary();
+}
+
+criterion_main!(benches);

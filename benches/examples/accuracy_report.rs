@@ -1,0 +1,598 @@
+//! Generates `docs/accuracy.md` and `docs/accuracy.svg`: for every algorithm × kernel (the convex
+//! algorithms and the separation of simple polygons), the time per
+//! query on random inputs and on the hard-case suite, beside the accuracy on the hard-case suite (the
+//! worst error in ulps against the exact answers stored with each case, the share of wrong features,
+//! and the failures). Issue 8's report; never edit the output by hand.
+//!
+//! Run from anywhere: `cargo run --release -p polydist-benches --example accuracy_report`.
+//!
+//! Timing harness: each (algorithm, kernel, input set) is run once to warm up, then `REPS` times over
+//! the whole set; the median of the repetitions, divided by the number of queries, is reported. The
+//! machine and its load are printed in the report: figures from a shared machine are ratios, not
+//! absolutes.
+
+use std::fmt::Write as _;
+use std::hint::black_box;
+use std::path::PathBuf;
+use std::time::Instant;
+
+use glam::DVec2;
+use polydist_convex::{
+    Separation, cmmr_with, distance_brute, distance_schwartz_with, distance_with,
+    distance_yang_with, hausdorff_with, min_vertex_distance_with,
+};
+use polydist_fixtures::hard_cases;
+use polydist_oracle::{
+    Feature as OFeature, HardAnswers, Relation, SplitMix64, convex_pair, ulps_error_sqrt,
+};
+use polydist_polygon::{ConvexPolygon, Feature, SimplePolygon};
+use polydist_predicates::BigRational;
+use polydist_predicates::{Exact, Fast, Kernel, Robust};
+use polydist_separation::{PolygonSeparation, polygon_separation_brute, separation};
+
+/// Repetitions of each timed set (the median is reported).
+const REPS: usize = 5;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Alg {
+    Dispatch,
+    Yang,
+    Schwartz,
+    Brute,
+    VertexDistance,
+    Hausdorff,
+    Cmmr,
+}
+
+impl Alg {
+    const ALL: [Alg; 7] = [
+        Alg::Dispatch,
+        Alg::Yang,
+        Alg::Schwartz,
+        Alg::Brute,
+        Alg::VertexDistance,
+        Alg::Hausdorff,
+        Alg::Cmmr,
+    ];
+
+    fn name(self) -> &'static str {
+        match self {
+            Alg::Dispatch => "distance (default)",
+            Alg::Yang => "distance, Yang O(log)",
+            Alg::Schwartz => "distance, Schwartz O(log²)",
+            Alg::Brute => "distance, brute force",
+            Alg::VertexDistance => "vertex distance (McKenna–Toussaint)",
+            Alg::Hausdorff => "Hausdorff (ARL)",
+            Alg::Cmmr => "CMMR (ARL)",
+        }
+    }
+}
+
+/// The answer of one algorithm, reduced to what is checked: the error in ulps of its value (against
+/// the exact value of the same quantity), and whether its combinatorial part (features, argmax,
+/// outcome) is exactly right.
+struct Verdict {
+    ulps: f64,
+    right: bool,
+}
+
+fn ours(f: OFeature) -> Feature {
+    match f {
+        OFeature::Vertex(i) => Feature::Vertex(i),
+        OFeature::Edge(i) => Feature::Edge(i),
+    }
+}
+
+/// Runs `alg` under `K` once; with answers, judges it.
+fn eval<K: Kernel>(
+    alg: Alg,
+    p: &ConvexPolygon,
+    q: &ConvexPolygon,
+    a: Option<&HardAnswers>,
+) -> Option<Verdict> {
+    let distance_verdict = |s: Separation, a: &HardAnswers| match (s, a.contact.as_str()) {
+        (Separation::Disjoint(c), "disjoint") => Verdict {
+            ulps: ulps_error_sqrt(c.distance, &a.dist),
+            right: a
+                .pairs
+                .iter()
+                .any(|&(f, g)| (ours(f), ours(g)) == (c.feature_p, c.feature_q)),
+        },
+        (
+            Separation::Touching {
+                feature_p,
+                feature_q,
+                ..
+            },
+            "touching",
+        ) => Verdict {
+            ulps: 0.0,
+            right: a
+                .pairs
+                .iter()
+                .any(|&(f, g)| (ours(f), ours(g)) == (feature_p, feature_q)),
+        },
+        (Separation::Overlapping, "overlapping") => Verdict {
+            ulps: 0.0,
+            right: true,
+        },
+        _ => Verdict {
+            ulps: 0.0,
+            right: false,
+        },
+    };
+    match alg {
+        Alg::Dispatch | Alg::Yang | Alg::Schwartz | Alg::Brute => {
+            let s = match alg {
+                Alg::Dispatch => distance_with::<K>(p, q),
+                Alg::Yang => distance_yang_with::<K>(p, q),
+                Alg::Schwartz => distance_schwartz_with::<K>(p, q),
+                _ => distance_brute::<K>(p, q),
+            };
+            a.map(|a| distance_verdict(black_box(s), a))
+        }
+        Alg::VertexDistance => {
+            let v = black_box(min_vertex_distance_with::<K>(p, q));
+            a.map(|a| Verdict {
+                ulps: ulps_error_sqrt(v.distance, &a.vdist),
+                right: a.vpairs.contains(&(v.vertex_p, v.vertex_q)),
+            })
+        }
+        Alg::Hausdorff => {
+            let h = black_box(hausdorff_with::<K>(p, q));
+            a.map(|a| Verdict {
+                ulps: ulps_error_sqrt(h.distance, if a.hpq >= a.hqp { &a.hpq } else { &a.hqp }),
+                right: a.apq.contains(&h.p_to_q.vertex) && a.aqp.contains(&h.q_to_p.vertex),
+            })
+        }
+        Alg::Cmmr => {
+            let c = black_box(cmmr_with::<K>(p, q));
+            a.map(|a| Verdict {
+                ulps: polydist_oracle::ulps_error(c.value, &a.cmmr),
+                right: true,
+            })
+        }
+    }
+}
+
+/// Median time per query over the set, in nanoseconds.
+fn time_set<K: Kernel>(alg: Alg, set: &[(ConvexPolygon, ConvexPolygon)]) -> f64 {
+    let run = || {
+        let clock = Instant::now();
+        for (p, q) in set {
+            let _ = eval::<K>(alg, p, q, None);
+        }
+        clock.elapsed().as_secs_f64() * 1e9 / set.len() as f64
+    };
+    run();
+    let mut t: Vec<f64> = (0..REPS).map(|_| run()).collect();
+    t.sort_by(f64::total_cmp);
+    t[REPS / 2]
+}
+
+struct Row {
+    name: &'static str,
+    kernel: &'static str,
+    random_ns: f64,
+    hard_ns: f64,
+    max_ulps: f64,
+    wrong: usize,
+    cases: usize,
+}
+
+fn row<K: Kernel>(
+    alg: Alg,
+    kernel: &'static str,
+    random: &[(ConvexPolygon, ConvexPolygon)],
+    hard: &[(ConvexPolygon, ConvexPolygon)],
+    answers: &[HardAnswers],
+) -> Row {
+    let (mut max_ulps, mut wrong) = (0.0f64, 0);
+    for ((p, q), a) in hard.iter().zip(answers) {
+        if let Some(v) = eval::<K>(alg, p, q, Some(a)) {
+            max_ulps = max_ulps.max(v.ulps);
+            wrong += usize::from(!v.right);
+        }
+    }
+    Row {
+        name: alg.name(),
+        kernel,
+        random_ns: time_set::<K>(alg, random),
+        hard_ns: time_set::<K>(alg, hard),
+        max_ulps,
+        wrong,
+        cases: hard.len(),
+    }
+}
+
+/// The simple-polygon part: `separation` (the default: the intersection check, then the hull
+/// shortcut or the separable chains) and its brute-force twin.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum SimpleAlg {
+    Separation,
+    Brute,
+}
+
+impl SimpleAlg {
+    fn name(self) -> &'static str {
+        match self {
+            SimpleAlg::Separation => "separation (Amato, disjoint hulls)",
+            SimpleAlg::Brute => "separation, brute force",
+        }
+    }
+}
+
+/// One simple case's exact answer: the contact status and the squared distance with its pairs.
+struct SimpleAnswer {
+    contact: String,
+    dist: BigRational,
+    pairs: Vec<(Feature, Feature)>,
+}
+
+fn simple_answer(c: &polydist_fixtures::HardCase) -> SimpleAnswer {
+    let d = c.answer("dist").expect("dist");
+    let f = |x: &str| {
+        let i = x[1..].parse().expect("index");
+        if x.starts_with('V') {
+            Feature::Vertex(i)
+        } else {
+            Feature::Edge(i)
+        }
+    };
+    SimpleAnswer {
+        contact: c.answer("contact").expect("contact")[0].clone(),
+        dist: d[0].parse().expect("rational"),
+        pairs: d[1..]
+            .iter()
+            .map(|w| {
+                let (a, b) = w.split_once(':').expect("pair");
+                (f(a), f(b))
+            })
+            .collect(),
+    }
+}
+
+fn eval_simple<K: Kernel>(
+    alg: SimpleAlg,
+    p: &SimplePolygon,
+    q: &SimplePolygon,
+    a: Option<&SimpleAnswer>,
+) -> Option<Verdict> {
+    let r = match alg {
+        SimpleAlg::Separation => separation::<K>(p, q),
+        SimpleAlg::Brute => polygon_separation_brute::<K>(p, q),
+    };
+    let a = a?;
+    Some(match (black_box(r), a.contact.as_str()) {
+        (Ok(PolygonSeparation::Separated { pair, .. }), "disjoint") => Verdict {
+            ulps: ulps_error_sqrt(pair.distance, &a.dist),
+            right: a.pairs.contains(&(pair.feature_p, pair.feature_q)),
+        },
+        (Ok(PolygonSeparation::Intersecting(_)), "touching" | "overlapping") => Verdict {
+            ulps: 0.0,
+            right: true,
+        },
+        _ => Verdict {
+            ulps: 0.0,
+            right: false,
+        },
+    })
+}
+
+fn time_simple<K: Kernel>(alg: SimpleAlg, set: &[(SimplePolygon, SimplePolygon)]) -> f64 {
+    let run = || {
+        let clock = Instant::now();
+        for (p, q) in set {
+            let _ = eval_simple::<K>(alg, p, q, None);
+        }
+        clock.elapsed().as_secs_f64() * 1e9 / set.len() as f64
+    };
+    run();
+    let mut t: Vec<f64> = (0..REPS).map(|_| run()).collect();
+    t.sort_by(f64::total_cmp);
+    t[REPS / 2]
+}
+
+fn simple_row<K: Kernel>(
+    alg: SimpleAlg,
+    kernel: &'static str,
+    random: &[(SimplePolygon, SimplePolygon)],
+    hard: &[(SimplePolygon, SimplePolygon)],
+    answers: &[SimpleAnswer],
+) -> Row {
+    let (mut max_ulps, mut wrong) = (0.0f64, 0);
+    for ((p, q), a) in hard.iter().zip(answers) {
+        if let Some(v) = eval_simple::<K>(alg, p, q, Some(a)) {
+            max_ulps = max_ulps.max(v.ulps);
+            wrong += usize::from(!v.right);
+        }
+    }
+    Row {
+        name: alg.name(),
+        kernel,
+        random_ns: time_simple::<K>(alg, random),
+        hard_ns: time_simple::<K>(alg, hard),
+        max_ulps,
+        wrong,
+        cases: hard.len(),
+    }
+}
+
+fn fmt_ns(ns: f64) -> String {
+    if ns >= 1e6 {
+        format!("{:.2} ms", ns / 1e6)
+    } else if ns >= 1e3 {
+        format!("{:.2} µs", ns / 1e3)
+    } else {
+        format!("{ns:.0} ns")
+    }
+}
+
+/// The chart: time per query on the hard suite (log x) against the worst error in ulps (log y; 0 is
+/// drawn on the bottom line), one point per algorithm × kernel, drawn by hand.
+fn svg(rows: &[Row]) -> String {
+    let (w, h, m) = (760.0, 460.0, 70.0);
+    let tmin = rows
+        .iter()
+        .map(|r| r.hard_ns)
+        .fold(f64::INFINITY, f64::min)
+        .max(1.0);
+    let tmax = rows
+        .iter()
+        .map(|r| r.hard_ns)
+        .fold(0.0, f64::max)
+        .max(tmin * 10.0);
+    let (lx0, lx1) = (tmin.log10().floor(), tmax.log10().ceil());
+    let emax = rows.iter().map(|r| r.max_ulps).fold(1.0, f64::max);
+    let (ly0, ly1) = (-2.0, emax.log10().ceil().max(1.0));
+    let x = |t: f64| m + (t.max(1.0).log10() - lx0) / (lx1 - lx0) * (w - 2.0 * m);
+    let y = |e: f64| {
+        let le = if e <= 0.0 { ly0 } else { e.log10().max(ly0) };
+        h - m - (le - ly0) / (ly1 - ly0) * (h - 2.0 * m)
+    };
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" font-family="sans-serif" font-size="11">"#
+    );
+    let _ = writeln!(s, r#"<rect width="{w}" height="{h}" fill="white"/>"#);
+    let _ = writeln!(
+        s,
+        r#"<line x1="{m}" y1="{0}" x2="{1}" y2="{0}" stroke="black"/><line x1="{m}" y1="{m}" x2="{m}" y2="{0}" stroke="black"/>"#,
+        h - m,
+        w - m
+    );
+    let mut d = lx0;
+    while d <= lx1 {
+        let px = x(10f64.powf(d));
+        let _ = writeln!(
+            s,
+            r##"<line x1="{px:.1}" y1="{0}" x2="{px:.1}" y2="{m}" stroke="#ddd"/><text x="{px:.1}" y="{1}" text-anchor="middle">{2}</text>"##,
+            h - m,
+            h - m + 16.0,
+            fmt_ns(10f64.powf(d))
+        );
+        d += 1.0;
+    }
+    let mut d = ly0;
+    while d <= ly1 {
+        let py = y(10f64.powf(d));
+        let _ = writeln!(
+            s,
+            r##"<line x1="{m}" y1="{py:.1}" x2="{0}" y2="{py:.1}" stroke="#ddd"/><text x="{1}" y="{2:.1}" text-anchor="end">{3}</text>"##,
+            w - m,
+            m - 6.0,
+            py + 4.0,
+            if d == ly0 {
+                "≤ 0.01".to_owned()
+            } else {
+                format!("{}", 10f64.powf(d))
+            }
+        );
+        d += 1.0;
+    }
+    let _ = writeln!(
+        s,
+        r#"<text x="{0}" y="{1}" text-anchor="middle">time per query on the hard-case suite</text><text x="16" y="{2}" transform="rotate(-90 16 {2})" text-anchor="middle">worst error (ulps)</text>"#,
+        w / 2.0,
+        h - 20.0,
+        h / 2.0
+    );
+    for r in rows {
+        let colour = match r.kernel {
+            "Fast" => "#d62728",
+            "Robust" => "#1f77b4",
+            _ => "#2ca02c",
+        };
+        let (px, py) = (x(r.hard_ns), y(r.max_ulps));
+        let mark = if r.wrong > 0 { "none" } else { colour };
+        let _ = writeln!(
+            s,
+            r#"<circle cx="{px:.1}" cy="{py:.1}" r="5" fill="{mark}" stroke="{colour}" stroke-width="2"><title>{} / {}: {} per query, worst {:.2} ulps, {} wrong</title></circle>"#,
+            r.name,
+            r.kernel,
+            fmt_ns(r.hard_ns),
+            r.max_ulps,
+            r.wrong
+        );
+    }
+    let _ = writeln!(
+        s,
+        r##"<text x="{0}" y="20" text-anchor="end"><tspan fill="#d62728">● Fast</tspan>  <tspan fill="#1f77b4">● Robust</tspan>  <tspan fill="#2ca02c">● Exact</tspan>  (hollow: some answer wrong)</text>"##,
+        w - m
+    );
+    s.push_str("</svg>\n");
+    s
+}
+
+fn main() {
+    let cases = hard_cases("hard/convex.txt").expect("fixtures/hard/convex.txt");
+    let pts = |v: &[[f64; 2]]| -> Vec<DVec2> { v.iter().map(|&[x, y]| DVec2::new(x, y)).collect() };
+    let hard: Vec<(ConvexPolygon, ConvexPolygon)> = cases
+        .iter()
+        .map(|c| {
+            (
+                ConvexPolygon::try_new(&pts(&c.p)).expect("convex"),
+                ConvexPolygon::try_new(&pts(&c.q)).expect("convex"),
+            )
+        })
+        .collect();
+    let answers: Vec<HardAnswers> = cases
+        .iter()
+        .map(|c| HardAnswers::from_words(&c.answers).expect("answers"))
+        .collect();
+    let mut rng = SplitMix64::new(0xacc0);
+    let random: Vec<(ConvexPolygon, ConvexPolygon)> = (0..40)
+        .map(|_| {
+            let pair = convex_pair(&mut rng, 64, 64, Relation::Far);
+            (
+                ConvexPolygon::try_new(&pair.p).expect("convex"),
+                ConvexPolygon::try_new(&pair.q).expect("convex"),
+            )
+        })
+        .collect();
+    let mut rows = Vec::new();
+    for alg in Alg::ALL {
+        eprintln!("{} …", alg.name());
+        rows.push(row::<Fast>(alg, "Fast", &random, &hard, &answers));
+        rows.push(row::<Robust>(alg, "Robust", &random, &hard, &answers));
+        rows.push(row::<Exact>(alg, "Exact", &random, &hard, &answers));
+    }
+
+    // Simple polygons: the hard suite's disjoint-hull pairs, and random stars side by side.
+    let scases = hard_cases("hard/simple.txt").expect("fixtures/hard/simple.txt");
+    let shard: Vec<(SimplePolygon, SimplePolygon)> = scases
+        .iter()
+        .map(|c| {
+            (
+                SimplePolygon::try_new(&pts(&c.p)).expect("simple"),
+                SimplePolygon::try_new(&pts(&c.q)).expect("simple"),
+            )
+        })
+        .collect();
+    let sanswers: Vec<SimpleAnswer> = scases.iter().map(simple_answer).collect();
+    let srandom: Vec<(SimplePolygon, SimplePolygon)> = (0..20)
+        .map(|_| {
+            let a = polydist_oracle::star(&mut rng, 64, 16);
+            let b = polydist_oracle::star(&mut rng, 64, 16);
+            let max_x = a.iter().map(|v| v.x).fold(f64::NEG_INFINITY, f64::max);
+            let min_x = b.iter().map(|v| v.x).fold(f64::INFINITY, f64::min);
+            let b: Vec<DVec2> = b
+                .iter()
+                .map(|&v| v + DVec2::new(max_x - min_x + 0.125, 0.0))
+                .collect();
+            (
+                SimplePolygon::try_new(&a).expect("simple"),
+                SimplePolygon::try_new(&b).expect("simple"),
+            )
+        })
+        .collect();
+    let mut srows = Vec::new();
+    for alg in [SimpleAlg::Separation, SimpleAlg::Brute] {
+        eprintln!("{} …", alg.name());
+        srows.push(simple_row::<Fast>(alg, "Fast", &srandom, &shard, &sanswers));
+        srows.push(simple_row::<Robust>(
+            alg, "Robust", &srandom, &shard, &sanswers,
+        ));
+        srows.push(simple_row::<Exact>(
+            alg, "Exact", &srandom, &shard, &sanswers,
+        ));
+    }
+
+    let mut md = String::new();
+    md.push_str("# What accuracy costs in time\n\n");
+    md.push_str(
+        "Generated by `cargo run --release -p polydist-benches --example accuracy_report` \
+         (`benches/examples/accuracy_report.rs`); do not edit by hand.\n\n",
+    );
+    let _ = writeln!(
+        md,
+        "Inputs: **random** = 40 pairs of disjoint random convex 64-gons (the oracle's `convex_pair`, \
+         `Relation::Far`); **hard** = the {} cases of the hard-case suite (`fixtures/hard/convex.txt`: \
+         nearly touching pairs 1–1000 ulps apart, exact contacts, offsets up to 1e15, parallel and \
+         one-ulp-off-parallel edges, co-circular vertex sets, collinear inputs, slivers, overlapping, \
+         nested and identical polygons), each stored with its exact answers from the oracle. Time: \
+         median of {REPS} passes over the set after one warm-up pass, per query. Error: the worst, \
+         over the hard cases, of the reported distance (or Hausdorff distance, or CMMR value) \
+         against the exact value, in ulps. Wrong: answers whose combinatorial part (features, \
+         argmax vertices, outcome) is not an exact optimum. The machine: {} cores, shared with \
+         other work while this ran: read times as ratios.\n",
+        hard.len(),
+        std::thread::available_parallelism().map_or(1, usize::from),
+    );
+    md.push_str("| algorithm | kernel | time, random | time, hard | worst error (ulps) | wrong | failures |\n");
+    md.push_str("|---|---|--:|--:|--:|--:|--:|\n");
+    for r in &rows {
+        let _ = writeln!(
+            md,
+            "| {} | {} | {} | {} | {:.2} | {} of {} | {} |",
+            r.name,
+            r.kernel,
+            fmt_ns(r.random_ns),
+            fmt_ns(r.hard_ns),
+            r.max_ulps,
+            r.wrong,
+            r.cases,
+            if r.kernel == "Fast" {
+                "not asserted".to_owned()
+            } else {
+                r.wrong.to_string()
+            }
+        );
+    }
+    let _ = writeln!(
+        md,
+        "\nSimple polygons (convex hulls disjoint; pairs whose hulls meet need Amato's separators, not \
+         built yet): **random** = 20 pairs of random 64-vertex stars side by side; **hard** = the {} \
+         cases of `fixtures/hard/simple.txt` (shapes 1–1000 ulps apart, the same at 1e12, saw-teeth \
+         facing tip to notch). The time includes the intersection check.\n",
+        shard.len()
+    );
+    md.push_str("| algorithm | kernel | time, random | time, hard | worst error (ulps) | wrong | failures |\n");
+    md.push_str("|---|---|--:|--:|--:|--:|--:|\n");
+    for r in &srows {
+        let _ = writeln!(
+            md,
+            "| {} | {} | {} | {} | {:.2} | {} of {} | {} |",
+            r.name,
+            r.kernel,
+            fmt_ns(r.random_ns),
+            fmt_ns(r.hard_ns),
+            r.max_ulps,
+            r.wrong,
+            r.cases,
+            if r.kernel == "Fast" {
+                "not asserted".to_owned()
+            } else {
+                r.wrong.to_string()
+            }
+        );
+    }
+    md.push_str(
+        "\n![time against worst error, one point per algorithm and kernel](accuracy.svg)\n\n",
+    );
+    md.push_str("## Which kernel to choose\n\n");
+    md.push_str(
+        "**Robust is the default and the right choice almost always.** It makes every decision \
+         exactly — the features, the argmax vertices and the outcome (disjoint, touching, \
+         overlapping) are an exact optimum on every hard case above — and its cost over Fast is \
+         small because the searches are guided in plain `f64` and only certified exactly (compare \
+         the two rows of each algorithm). The reported distances are constructed once from the \
+         exact features and stay within the documented bounds (distance 3.5 ulps, squared distance \
+         5, Hausdorff 3.5, CMMR 6), even 1 ulp from contact or 1e15 from the origin.\n\n",
+    );
+    md.push_str(
+        "**Fast** evaluates the same predicates in plain `f64`: it always terminates, but near \
+         ties it may choose a wrong feature or outcome (the `wrong` column); use it only when \
+         inputs are known to be far from degenerate and every nanosecond counts. **Exact** \
+         evaluates every predicate in exact arithmetic without a filter; its answers are the same \
+         as Robust's, at a much higher cost, and it adds exact rational results \
+         (`distance_exact`, `hausdorff_squared_exact`): use it as a reference, or when an exact \
+         rational squared distance is the output you need.\n",
+    );
+    let docs = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../docs");
+    std::fs::write(docs.join("accuracy.md"), md).expect("write docs/accuracy.md");
+    rows.extend(srows);
+    std::fs::write(docs.join("accuracy.svg"), svg(&rows)).expect("write docs/accuracy.svg");
+    println!("wrote docs/accuracy.md and docs/accuracy.svg");
+}

@@ -1,0 +1,433 @@
+//! Writes the hard-case suite `fixtures/hard/convex.txt` (issue 8): pairs of convex polygons from the
+//! oracle's seeded generators, each with its exact answers computed by this crate (the independent
+//! exact rational brute force), never by an algorithm under test.
+//!
+//! Run from the workspace root: `cargo run -p polydist-oracle --example gen_hard --release`.
+//! The output is deterministic (fixed seeds, shortest round-trip decimals); the file is committed
+//! and read by `polydist_fixtures::hard`.
+//!
+//! Format, one case per block:
+//! ```text
+//! case FAMILY NAME
+//! p x y x y …          (P's vertices, shortest round-trip decimals, exact)
+//! q x y …
+//! contact C           (disjoint, touching or overlapping: relative interiors, filled polygons)
+//! dist SQ PAIRS        (filled convex P, Q: exact squared distance, 0 when they meet; every optimal
+//!                       feature pair as V3:E1 = vertex 3 of P with edge 1 of Q)
+//! vdist SQ I:J …       (minimum vertex distance, squared, with every optimal index pair; vertices are
+//!                       the corners polydist keeps: input vertices collinear with their neighbours
+//!                       are not vertices, as `ConvexPolygon::try_new` documents)
+//! hpq SQ I …           (directed Hausdorff h(P, Q) of the filled polygons, squared, every argmax)
+//! hqp SQ J …           (h(Q, P))
+//! cmmr SQ              (Σ dist(v, Q)² + Σ dist(w, P)² over the corners, exact)
+//! end
+//! ```
+
+use std::fmt::Write as _;
+use std::path::PathBuf;
+
+use glam::DVec2;
+use polydist_oracle::{
+    Axis, Contact, Feature, Relation, SplitMix64, boundary_distance, cmmr, cocircular,
+    cocircular_perturbed, comb, contact_status_convex, contact_status_simple, convex_distance,
+    convex_pair, directed_hausdorff_filled, min_vertex_distance, offset, parallel_facing,
+    sign_orient, sliver, spiral, star, step_ulps, two_opt, with_gap_ulps,
+};
+
+fn feature(f: Feature) -> String {
+    match f {
+        Feature::Vertex(i) => format!("V{i}"),
+        Feature::Edge(i) => format!("E{i}"),
+    }
+}
+
+fn coords(v: &[DVec2]) -> String {
+    v.iter()
+        .map(|p| format!("{:?} {:?}", p.x, p.y))
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+/// The caller indices of the vertices `ConvexPolygon::try_new` keeps: the corners (first of a run of
+/// repeats; vertices collinear with their neighbours dropped), decided exactly. The vertex-based
+/// answers (`vdist`, `cmmr`) are defined on these, as polydist documents.
+fn corners(v: &[DVec2]) -> Vec<usize> {
+    let n = v.len();
+    if n <= 2 {
+        return (0..n).collect();
+    }
+    // The nearest distinct vertex before and after `i` (repeats are skipped).
+    let distinct = |i: usize, step: usize| {
+        (1..n)
+            .map(|k| v[(i + k * step) % n])
+            .find(|&w| w != v[i])
+            .unwrap_or(v[i])
+    };
+    (0..n)
+        .filter(|&i| {
+            let (a, b, c) = (distinct(i, n - 1), v[i], distinct(i, 1));
+            v[(i + n - 1) % n] != b && sign_orient(a, b, c) != std::cmp::Ordering::Equal
+        })
+        .collect()
+}
+
+/// One case with every answer.
+fn case(out: &mut String, family: &str, name: &str, p: &[DVec2], q: &[DVec2]) {
+    let d = convex_distance(p, q);
+    let (kp, kq) = (corners(p), corners(q));
+    let pick = |v: &[DVec2], k: &[usize]| -> Vec<DVec2> { k.iter().map(|&i| v[i]).collect() };
+    let (cp, cq) = (pick(p, &kp), pick(q, &kq));
+    let (vsq, vpairs) = min_vertex_distance(&cp, &cq);
+    let vpairs: Vec<(usize, usize)> = vpairs.iter().map(|&(i, j)| (kp[i], kq[j])).collect();
+    let (hpq, apq) = directed_hausdorff_filled(p, q);
+    let (hqp, aqp) = directed_hausdorff_filled(q, p);
+    let c = cmmr(&cp, &cq);
+    let contact = match contact_status_convex(p, q) {
+        Contact::Disjoint => "disjoint",
+        Contact::Touching => "touching",
+        Contact::Overlapping => "overlapping",
+    };
+    let pairs: Vec<String> = d
+        .pairs
+        .iter()
+        .map(|&(f, g)| format!("{}:{}", feature(f), feature(g)))
+        .collect();
+    let vp: Vec<String> = vpairs.iter().map(|(i, j)| format!("{i}:{j}")).collect();
+    let list = |a: &[usize]| a.iter().map(usize::to_string).collect::<Vec<_>>().join(" ");
+    let _ = writeln!(out, "case {family} {name}");
+    let _ = writeln!(out, "p {}", coords(p));
+    let _ = writeln!(out, "q {}", coords(q));
+    let _ = writeln!(out, "contact {contact}");
+    let _ = writeln!(out, "dist {} {}", d.sq, pairs.join(" "));
+    let _ = writeln!(out, "vdist {} {}", vsq, vp.join(" "));
+    let _ = writeln!(out, "hpq {} {}", hpq, list(&apq));
+    let _ = writeln!(out, "hqp {} {}", hqp, list(&aqp));
+    let _ = writeln!(out, "cmmr {c}");
+    let _ = writeln!(out, "end");
+}
+
+fn moved(v: &[DVec2], dx: f64, dy: f64) -> Option<Vec<DVec2>> {
+    offset(v, dx, dy)
+}
+
+fn main() {
+    let mut out = String::new();
+    out.push_str(
+        "# polydist hard-case suite: pairs of convex polygons with exact answers from the oracle.\n\
+         # Generated by `cargo run -p polydist-oracle --example gen_hard --release`: do not edit.\n\
+         # Format: see crates/oracle/examples/gen_hard.rs.\n",
+    );
+    let mut rng = SplitMix64::new(0x4a7d_ca5e);
+    let sizes = [(3, 3), (5, 7), (12, 9), (40, 33)];
+
+    // Nearly touching: 1, 4 and 1000 ulps of the coordinates.
+    for ulps in [1u64, 4, 1000] {
+        for (k, &(n, m)) in sizes.iter().enumerate() {
+            let pair = convex_pair(&mut rng, n, m, Relation::NearlyTouching { ulps });
+            case(
+                &mut out,
+                "nearly_touching",
+                &format!("{ulps}ulp-{k}"),
+                &pair.p,
+                &pair.q,
+            );
+        }
+    }
+    // Relative gaps about 1e-9 (2^-30) and 1e-12 (2^-40) of unit-size polygons, along x and y.
+    for (label, ulps) in [("1e-9", 1u64 << 22), ("1e-12", 1u64 << 12)] {
+        for (k, &(n, m)) in sizes.iter().enumerate() {
+            let pair = convex_pair(&mut rng, n, m, Relation::NearlyTouching { ulps: 1 });
+            let axis = if k % 2 == 0 { Axis::X } else { Axis::Y };
+            if let Some(q) = with_gap_ulps(&pair.p, &pair.q, ulps, axis) {
+                case(
+                    &mut out,
+                    "relative_gap",
+                    &format!("{label}-{k}"),
+                    &pair.p,
+                    &q,
+                );
+            }
+        }
+    }
+    // Exactly touching: vertex on vertex, vertex on edge, edge along edge.
+    for (label, rel) in [
+        ("vertex", Relation::TouchingVertex),
+        ("vertex_on_edge", Relation::VertexOnEdge),
+        ("edge", Relation::TouchingEdge),
+    ] {
+        for (k, &(n, m)) in sizes.iter().enumerate() {
+            let pair = convex_pair(&mut rng, n, m, rel);
+            case(
+                &mut out,
+                "touching",
+                &format!("{label}-{k}"),
+                &pair.p,
+                &pair.q,
+            );
+        }
+    }
+    // Huge offsets with representable gaps: the generator's own 1e15 pairs, and nearly touching pairs
+    // moved by 1e8 and 1e12 (exact moves only).
+    for (k, &(n, m)) in sizes.iter().enumerate() {
+        let pair = convex_pair(&mut rng, n, m, Relation::HugeOffset);
+        case(
+            &mut out,
+            "huge_offset",
+            &format!("1e15-{k}"),
+            &pair.p,
+            &pair.q,
+        );
+    }
+    for off in [1e8f64, 1e12] {
+        for (k, &(n, m)) in sizes.iter().enumerate() {
+            // The pair lives in (−1, −0.5) on the grid 2^−53; scaled by 2^e (exact) it lies in
+            // (−2^e, −2^(e−1)) on the grid 2^(e−53), where adding `off < 2^(e−1)` is exact.
+            let pair = convex_pair(&mut rng, n, m, Relation::NearlyTouching { ulps: 4 });
+            let e = (off.log2().ceil() as i32) + 1;
+            let scale =
+                |v: &[DVec2]| -> Vec<DVec2> { v.iter().map(|&x| x * 2f64.powi(e)).collect() };
+            let (sp, sq) = (scale(&pair.p), scale(&pair.q));
+            if let (Some(p), Some(q)) = (moved(&sp, off, off), moved(&sq, off, off)) {
+                case(&mut out, "huge_offset", &format!("{off:e}-{k}"), &p, &q);
+            }
+        }
+    }
+    // Exactly parallel facing edges in integer directions, and one ulp off parallel.
+    for (k, dir) in [(1, 0), (3, 4), (7, -2), (1, 1), (-5, 12)]
+        .into_iter()
+        .enumerate()
+    {
+        let n = [4, 6, 9, 5, 16][k];
+        let f = parallel_facing(&mut rng, n, dir, 2f64.powi(-20));
+        case(
+            &mut out,
+            "parallel",
+            &format!("{}_{}", dir.0, dir.1),
+            &f.p,
+            &f.q,
+        );
+        // One ulp off: the last vertex of q (an end of its facing edge) moved by one ulp in x.
+        let mut q = f.q.clone();
+        let last = q.len() - 1;
+        q[last].x = step_ulps(q[last].x, 1);
+        if polydist_oracle::is_convex(&q) {
+            case(
+                &mut out,
+                "parallel_ulp_off",
+                &format!("{}_{}", dir.0, dir.1),
+                &f.p,
+                &q,
+            );
+        }
+    }
+    // Co-circular vertex sets (McKenna–Toussaint): the lattice points of x² + y² = 5^(2k) with
+    // x > 5^k / 2, every one at the same distance from Q's vertex at the origin; then one vertex moved
+    // one ulp in or out.
+    for k in [1u32, 2, 3] {
+        let r = 5f64.powi(k as i32);
+        let arc =
+            |pts: Vec<DVec2>| -> Vec<DVec2> { pts.into_iter().filter(|v| v.x > r / 2.0).collect() };
+        let q = vec![DVec2::ZERO, DVec2::new(-r, r), DVec2::new(-r, -r)];
+        let p = arc(cocircular(k));
+        if p.len() >= 3 {
+            case(&mut out, "cocircular", &format!("k{k}"), &p, &q);
+        }
+        let full = cocircular(k);
+        let index = full.iter().position(|v| v.x > r / 2.0).unwrap_or(0);
+        for steps in [-1i64, 1] {
+            let p = arc(cocircular_perturbed(k, index, steps));
+            if p.len() >= 3 && polydist_oracle::is_convex(&p) {
+                case(
+                    &mut out,
+                    "cocircular_perturbed",
+                    &format!("k{k}_{steps}"),
+                    &p,
+                    &q,
+                );
+            }
+        }
+    }
+    // The same sets far from the origin (integer moves, exact) with k up to 10: the squared
+    // distances then exceed 2^53, so plain f64 cannot separate the near-ties a one-ulp move makes.
+    for k in [6u32, 8, 10] {
+        let r = 5f64.powi(k as i32);
+        let arc =
+            |pts: Vec<DVec2>| -> Vec<DVec2> { pts.into_iter().filter(|v| v.x > r / 2.0).collect() };
+        let q = vec![DVec2::ZERO, DVec2::new(-r, r), DVec2::new(-r, -r)];
+        let full = cocircular(k);
+        let index = full.iter().position(|v| v.x > r / 2.0).unwrap_or(0);
+        for off in [2f64.powi(26), 2f64.powi(40)] {
+            for steps in [0i64, -1, 1] {
+                let p = arc(if steps == 0 {
+                    cocircular(k)
+                } else {
+                    cocircular_perturbed(k, index, steps)
+                });
+                let (Some(pm), Some(qm)) = (moved(&p, off, -off), moved(&q, off, -off)) else {
+                    continue;
+                };
+                if pm.len() >= 3 && polydist_oracle::is_convex(&pm) {
+                    case(
+                        &mut out,
+                        "cocircular_far",
+                        &format!("k{k}_{steps}_2^{}", off.log2()),
+                        &pm,
+                        &qm,
+                    );
+                }
+            }
+        }
+    }
+    // Collinear input vertices, slivers, far apart.
+    for (label, rel) in [
+        ("collinear_input", Relation::CollinearInput),
+        ("sliver", Relation::Sliver),
+        ("far", Relation::Far),
+    ] {
+        for (k, &(n, m)) in sizes.iter().enumerate() {
+            let pair = convex_pair(&mut rng, n, m, rel);
+            case(&mut out, label, &format!("{k}"), &pair.p, &pair.q);
+        }
+    }
+    // Slivers of aspect ratio about 1e9 (2^30) beside a unit triangle.
+    for k in 0..3 {
+        let s = sliver(&mut rng, 6 + 3 * k, 2f64.powi(30));
+        let max_x = s.iter().map(|v| v.x).fold(f64::NEG_INFINITY, f64::max);
+        let t = vec![
+            DVec2::new(max_x + 0.5, 0.0),
+            DVec2::new(max_x + 1.5, -0.5),
+            DVec2::new(max_x + 1.5, 0.5),
+        ];
+        case(&mut out, "sliver_1e9", &format!("{k}"), &s, &t);
+    }
+    // Overlapping, nested and identical polygons (for Hausdorff and CMMR).
+    for (label, rel) in [
+        ("overlapping", Relation::Overlapping),
+        ("nested", Relation::Nested),
+    ] {
+        for (k, &(n, m)) in sizes.iter().enumerate() {
+            let pair = convex_pair(&mut rng, n, m, rel);
+            case(&mut out, label, &format!("{k}"), &pair.p, &pair.q);
+        }
+    }
+    for (k, &(n, m)) in sizes.iter().enumerate() {
+        let pair = convex_pair(&mut rng, n, m, Relation::Far);
+        case(&mut out, "identical", &format!("{k}"), &pair.p, &pair.p);
+    }
+
+    write("convex.txt", &out);
+    write("simple.txt", &simple_cases());
+}
+
+/// Writes `fixtures/hard/NAME`.
+fn write(name: &str, text: &str) {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../../fixtures/hard")
+        .join(name);
+    if let Some(dir) = path.parent() {
+        std::fs::create_dir_all(dir).expect("create fixtures/hard");
+    }
+    std::fs::write(&path, text).expect("write a fixture");
+    println!("wrote {}", path.display());
+}
+
+/// One pair of simple polygons: the contact status of the closed polygons and their exact boundary
+/// distance with every optimal pair.
+fn simple_case(out: &mut String, family: &str, name: &str, p: &[DVec2], q: &[DVec2]) {
+    let contact = match contact_status_simple(p, q) {
+        Contact::Disjoint => "disjoint",
+        Contact::Touching => "touching",
+        Contact::Overlapping => "overlapping",
+    };
+    let d = boundary_distance(p, q);
+    let pairs: Vec<String> = d
+        .pairs
+        .iter()
+        .map(|&(f, g)| format!("{}:{}", feature(f), feature(g)))
+        .collect();
+    let _ = writeln!(out, "case {family} {name}");
+    let _ = writeln!(out, "p {}", coords(p));
+    let _ = writeln!(out, "q {}", coords(q));
+    let _ = writeln!(out, "contact {contact}");
+    let _ = writeln!(out, "dist {} {}", d.sq, pairs.join(" "));
+    let _ = writeln!(out, "end");
+}
+
+/// A saw-tooth slab with `t` teeth facing right (tips at x = 5), on the grid of integers.
+fn sawtooth(t: usize) -> Vec<DVec2> {
+    let mut p = vec![DVec2::new(0.0, 0.0), DVec2::new(4.0, 0.0)];
+    for k in 0..t {
+        let y = 2.0 * k as f64;
+        p.push(DVec2::new(5.0, y + 1.0));
+        p.push(DVec2::new(4.0, y + 2.0));
+    }
+    p.push(DVec2::new(0.0, 2.0 * t as f64));
+    p
+}
+
+/// The simple-polygon families whose convex hulls are disjoint (the interlocked families wait for
+/// Amato's separators): generated shapes side by side 1, 4 and 1000 ulps apart along x or y, far
+/// from the origin, and saw-teeth facing each other tip to notch (the hulls' closest features are
+/// lids, so the separable-chains route runs).
+fn simple_cases() -> String {
+    let mut out = String::new();
+    out.push_str(
+        "# polydist hard-case suite: pairs of simple polygons with exact answers from the oracle.\n\
+         # Generated by `cargo run -p polydist-oracle --example gen_hard --release`: do not edit.\n\
+         # Format: case/p/q/contact/dist as in convex.txt (dist: exact squared boundary distance).\n",
+    );
+    let mut rng = SplitMix64::new(0x51_3b1e);
+    let mut shapes: Vec<(String, Vec<DVec2>)> = Vec::new();
+    for n in [6usize, 12, 30] {
+        shapes.push((format!("star{n}"), star(&mut rng, n, n / 3)));
+        shapes.push((format!("two_opt{n}"), two_opt(&mut rng, n)));
+    }
+    shapes.push(("spiral".to_owned(), spiral(6, 2)));
+    shapes.push(("comb".to_owned(), comb(4, 3, 1)));
+    for (k, (pn, p)) in shapes.iter().enumerate() {
+        let (qn, q) = &shapes[(k + 3) % shapes.len()];
+        for ulps in [1u64, 4, 1000] {
+            let axis = if ulps == 4 { Axis::Y } else { Axis::X };
+            if let Some(q) = with_gap_ulps(p, q, ulps, axis) {
+                simple_case(
+                    &mut out,
+                    "side_by_side",
+                    &format!("{pn}_{qn}_{ulps}ulp"),
+                    p,
+                    &q,
+                );
+                // Scaled by 2^41 (exact) so that adding 1e12 stays exact.
+                let scale =
+                    |v: &[DVec2]| -> Vec<DVec2> { v.iter().map(|&x| x * 2f64.powi(41)).collect() };
+                if let (Some(pm), Some(qm)) = (
+                    offset(&scale(p), 1e12, -1e12),
+                    offset(&scale(&q), 1e12, -1e12),
+                ) {
+                    simple_case(
+                        &mut out,
+                        "side_by_side_far",
+                        &format!("{pn}_{qn}_{ulps}ulp"),
+                        &pm,
+                        &qm,
+                    );
+                }
+            }
+        }
+    }
+    for t in [2usize, 5, 12] {
+        let p = sawtooth(t);
+        for gap_ulps in [1u64, 4, 1000] {
+            // The mirror image moved up by one (tips opposite notches), `gap_ulps` ulps of 5 beyond the
+            // tips: exact, the coordinates stay on the grid of ulp(5) = 2^-50 (below 8).
+            let q: Vec<DVec2> = p
+                .iter()
+                .rev()
+                .map(|v| DVec2::new(10.0 - v.x, v.y + 1.0))
+                .collect();
+            if let Some(q) = with_gap_ulps(&p, &q, gap_ulps, Axis::X) {
+                simple_case(&mut out, "sawteeth", &format!("t{t}_{gap_ulps}ulp"), &p, &q);
+            }
+        }
+    }
+    out
+}

@@ -1,0 +1,294 @@
+//! The hard-case suite (issue 8): every convex algorithm under every kernel on every case of
+//! `fixtures/hard/convex.txt`, against the exact answers stored with the case (computed by the oracle
+//! when the file was generated, never by an algorithm under test).
+//!
+//! Under Robust and Exact: exact optimal features and the documented bounds on every case, no
+//! exceptions (distance within 3.5 ulps, squared distance within 5, Hausdorff within 3.5, CMMR within 6).
+//! Under Fast: the number of wrong answers is recorded and printed; only termination without a panic
+//! is asserted.
+
+use glam::DVec2;
+use polydist::convex::{
+    Separation, cmmr_with, distance_brute, distance_schwartz_with, distance_with,
+    distance_yang_with, hausdorff_with, min_vertex_distance_with,
+};
+use polydist::polygon::{ConvexPolygon, Feature};
+use polydist::predicates::{Exact, Fast, Kernel, Robust};
+use polydist_fixtures::{HardCase, hard_cases};
+use polydist_oracle::{HardAnswers, ulps_error, ulps_error_sqrt};
+use std::collections::BTreeMap;
+
+/// The answers of a case, with the oracle's features as polydist's.
+struct Answers {
+    exact: HardAnswers,
+    pairs: Vec<(Feature, Feature)>,
+}
+
+fn ours(f: polydist_oracle::Feature) -> Feature {
+    match f {
+        polydist_oracle::Feature::Vertex(i) => Feature::Vertex(i),
+        polydist_oracle::Feature::Edge(i) => Feature::Edge(i),
+    }
+}
+
+fn answers(c: &HardCase) -> Answers {
+    let exact = HardAnswers::from_words(&c.answers).unwrap_or_else(|e| panic!("{}: {e}", c.name));
+    let pairs = exact
+        .pairs
+        .iter()
+        .map(|&(f, g)| (ours(f), ours(g)))
+        .collect();
+    Answers { exact, pairs }
+}
+
+fn points(v: &[[f64; 2]]) -> Vec<DVec2> {
+    v.iter().map(|&[x, y]| DVec2::new(x, y)).collect()
+}
+
+/// What went wrong on one case, or `None`.
+type Check = Option<String>;
+
+fn check_distance(s: &Separation, a: &Answers) -> Check {
+    match (s, a.exact.contact.as_str()) {
+        (Separation::Disjoint(c), "disjoint") => {
+            if !a.pairs.contains(&(c.feature_p, c.feature_q)) {
+                return Some(format!(
+                    "features {:?} {:?} not optimal",
+                    c.feature_p, c.feature_q
+                ));
+            }
+            let (e, e2) = (
+                ulps_error_sqrt(c.distance, &a.exact.dist),
+                ulps_error(c.squared_distance, &a.exact.dist),
+            );
+            (e > 3.5 || e2 > 5.0).then(|| format!("distance off by {e} ulps, squared by {e2}"))
+        }
+        (
+            Separation::Touching {
+                feature_p,
+                feature_q,
+                ..
+            },
+            "touching",
+        ) => (!a.pairs.contains(&(*feature_p, *feature_q)))
+            .then(|| format!("touching features {feature_p:?} {feature_q:?} do not meet")),
+        (Separation::Overlapping, "overlapping") => None,
+        (s, c) => Some(format!("outcome {s:?}, expected {c}")),
+    }
+}
+
+/// Every algorithm of the convex crate on one case under `K`: (algorithm, failure) pairs.
+fn run_case<K: Kernel>(
+    p: &ConvexPolygon,
+    q: &ConvexPolygon,
+    a: &Answers,
+) -> Vec<(&'static str, Check)> {
+    let mut out = vec![
+        (
+            "distance (dispatch)",
+            check_distance(&distance_with::<K>(p, q), a),
+        ),
+        (
+            "distance Yang",
+            check_distance(&distance_yang_with::<K>(p, q), a),
+        ),
+        (
+            "distance Schwartz",
+            check_distance(&distance_schwartz_with::<K>(p, q), a),
+        ),
+        (
+            "distance brute force",
+            check_distance(&distance_brute::<K>(p, q), a),
+        ),
+    ];
+    let v = min_vertex_distance_with::<K>(p, q);
+    out.push((
+        "vertex distance",
+        if a.exact.vpairs.contains(&(v.vertex_p, v.vertex_q)) {
+            let e = ulps_error_sqrt(v.distance, &a.exact.vdist);
+            (e > 3.5).then(|| format!("vertex distance off by {e} ulps"))
+        } else {
+            Some(format!(
+                "vertex pair {}:{} not optimal",
+                v.vertex_p, v.vertex_q
+            ))
+        },
+    ));
+    let h = hausdorff_with::<K>(p, q);
+    let hmax = if a.exact.hpq >= a.exact.hqp {
+        &a.exact.hpq
+    } else {
+        &a.exact.hqp
+    };
+    out.push((
+        "Hausdorff",
+        if !a.exact.apq.contains(&h.p_to_q.vertex) || !a.exact.aqp.contains(&h.q_to_p.vertex) {
+            Some(format!(
+                "argmax {} / {} not optimal",
+                h.p_to_q.vertex, h.q_to_p.vertex
+            ))
+        } else {
+            let e = ulps_error_sqrt(h.distance, hmax);
+            (e > 3.5).then(|| format!("Hausdorff off by {e} ulps"))
+        },
+    ));
+    let c = cmmr_with::<K>(p, q);
+    let e = ulps_error(c.value, &a.exact.cmmr);
+    out.push(("CMMR", (e > 6.0).then(|| format!("CMMR off by {e} ulps"))));
+    out
+}
+
+#[test]
+fn every_convex_algorithm_on_every_hard_case() {
+    let cases = hard_cases("hard/convex.txt").expect("fixtures/hard/convex.txt");
+    assert!(cases.len() >= 80, "the suite shrank: {} cases", cases.len());
+    let mut failures = Vec::new();
+    let mut fast_wrong: BTreeMap<&str, usize> = BTreeMap::new();
+    for c in &cases {
+        let a = answers(c);
+        let (p, q) = (
+            ConvexPolygon::try_new(&points(&c.p)).expect("convex"),
+            ConvexPolygon::try_new(&points(&c.q)).expect("convex"),
+        );
+        for (kernel, results) in [
+            ("Robust", run_case::<Robust>(&p, &q, &a)),
+            ("Exact", run_case::<Exact>(&p, &q, &a)),
+        ] {
+            for (alg, r) in results {
+                if let Some(why) = r {
+                    failures.push(format!("{kernel} {alg} {}/{}: {why}", c.family, c.name));
+                }
+            }
+        }
+        for (alg, r) in run_case::<Fast>(&p, &q, &a) {
+            *fast_wrong.entry(alg).or_default() += usize::from(r.is_some());
+        }
+    }
+    eprintln!(
+        "Fast kernel, wrong answers of {} hard cases: {fast_wrong:?}",
+        cases.len()
+    );
+    assert!(
+        failures.is_empty(),
+        "{} failures:\n{}",
+        failures.len(),
+        failures.join("\n")
+    );
+}
+
+#[test]
+fn the_suite_covers_every_family() {
+    let cases = hard_cases("hard/convex.txt").expect("fixtures/hard/convex.txt");
+    for family in [
+        "nearly_touching",
+        "relative_gap",
+        "touching",
+        "huge_offset",
+        "parallel",
+        "parallel_ulp_off",
+        "cocircular",
+        "cocircular_perturbed",
+        "cocircular_far",
+        "collinear_input",
+        "sliver",
+        "sliver_1e9",
+        "overlapping",
+        "nested",
+        "identical",
+        "far",
+    ] {
+        assert!(
+            cases.iter().any(|c| c.family == family),
+            "no case of {family}"
+        );
+    }
+}
+
+/// The simple-polygon cases (`fixtures/hard/simple.txt`, hulls disjoint): `separation` and its
+/// brute-force twin under every kernel.
+#[test]
+fn polygon_separation_on_every_simple_hard_case() {
+    use polydist::polygon::SimplePolygon;
+    use polydist::separation::{PolygonSeparation, Route, polygon_separation_brute, separation};
+
+    let cases = hard_cases("hard/simple.txt").expect("fixtures/hard/simple.txt");
+    assert!(cases.len() >= 25, "the suite shrank: {} cases", cases.len());
+    fn check<K: Kernel>(p: &SimplePolygon, q: &SimplePolygon, c: &HardCase, brute: bool) -> Check {
+        let contact = &c.answer("contact").expect("contact")[0];
+        let dist = c.answer("dist").expect("dist");
+        let sq: polydist::predicates::BigRational = dist[0].parse().expect("rational");
+        let pairs: Vec<(Feature, Feature)> = dist[1..]
+            .iter()
+            .map(|w| {
+                let (a, b) = w.split_once(':').expect("pair");
+                let f = |x: &str| {
+                    let i = x[1..].parse().expect("index");
+                    if x.starts_with('V') {
+                        Feature::Vertex(i)
+                    } else {
+                        Feature::Edge(i)
+                    }
+                };
+                (f(a), f(b))
+            })
+            .collect();
+        let answer = if brute {
+            polygon_separation_brute::<K>(p, q)
+        } else {
+            separation::<K>(p, q)
+        };
+        match (answer, contact.as_str()) {
+            (Ok(PolygonSeparation::Separated { pair, .. }), "disjoint") => {
+                if !pairs.contains(&(pair.feature_p, pair.feature_q)) {
+                    return Some(format!(
+                        "features {:?} {:?} not optimal",
+                        pair.feature_p, pair.feature_q
+                    ));
+                }
+                let e = ulps_error_sqrt(pair.distance, &sq);
+                (e > 3.5).then(|| format!("distance off by {e} ulps"))
+            }
+            (Ok(PolygonSeparation::Intersecting(_)), "touching" | "overlapping") => None,
+            (a, c) => Some(format!("answer {a:?}, expected {c}")),
+        }
+    }
+    let mut failures = Vec::new();
+    let (mut fast_wrong, mut chains) = (0, 0);
+    for c in &cases {
+        let (p, q) = (
+            SimplePolygon::try_new(&points(&c.p)).expect("simple"),
+            SimplePolygon::try_new(&points(&c.q)).expect("simple"),
+        );
+        if let Ok(PolygonSeparation::Separated {
+            route: Route::SeparableChains,
+            ..
+        }) = separation::<Robust>(&p, &q)
+        {
+            chains += 1;
+        }
+        for (name, r) in [
+            ("Robust separation", check::<Robust>(&p, &q, c, false)),
+            ("Exact separation", check::<Exact>(&p, &q, c, false)),
+            ("Robust brute force", check::<Robust>(&p, &q, c, true)),
+        ] {
+            if let Some(why) = r {
+                failures.push(format!("{name} {}/{}: {why}", c.family, c.name));
+            }
+        }
+        fast_wrong += usize::from(check::<Fast>(&p, &q, c, false).is_some());
+    }
+    eprintln!(
+        "Fast kernel, wrong separations: {fast_wrong} of {}",
+        cases.len()
+    );
+    assert!(
+        chains >= 5,
+        "the separable-chains route ran on {chains} cases only"
+    );
+    assert!(
+        failures.is_empty(),
+        "{} failures:\n{}",
+        failures.len(),
+        failures.join("\n")
+    );
+}

@@ -1,0 +1,618 @@
+//! σ of general (non-monotone) simple chains and of whole closed polygon boundaries, separated by a
+//! line through an edge of one polygon's hull: agreement with the exact oracle and the brute force,
+//! the envelope against its `O(n²)` twin, every CVV/CVE matrix checked for total monotonicity.
+
+mod common;
+
+use common::{Case, simple_chain};
+use glam::DVec2;
+use monotone_minima::{brute_force_row_minima_by, check_totally_monotone_by, row_minima_by};
+use polydist_oracle::{SplitMix64, chain_distance, comb, spiral, star, two_opt, ulps_error_sqrt};
+use polydist_polygon::Feature;
+use polydist_predicates::{Exact, Fast, Kernel, Robust};
+use polydist_separation::{
+    CveMatrix, CvvMatrix, compare_edge_entries, compare_entries, perpendicular_envelope,
+    perpendicular_envelope_brute, separation_brute, separation_of_chains,
+};
+use proptest::prelude::*;
+
+type I = (i64, i64);
+
+fn oracle_feature(f: Feature) -> polydist_oracle::Feature {
+    match f {
+        Feature::Vertex(i) => polydist_oracle::Feature::Vertex(i),
+        Feature::Edge(i) => polydist_oracle::Feature::Edge(i),
+    }
+}
+
+/// Integer coordinates of a generator's polygon (its coordinates are multiples of `2^-bits`).
+fn ints(poly: &[DVec2], bits: i32) -> Vec<I> {
+    let s = 2f64.powi(bits);
+    poly.iter()
+        .map(|v| {
+            let (x, y) = (v.x * s, v.y * s);
+            assert!(x.fract() == 0.0 && y.fract() == 0.0, "not on the lattice");
+            (x as i64, y as i64)
+        })
+        .collect()
+}
+
+fn cross(o: I, a: I, b: I) -> i128 {
+    let (ax, ay) = (i128::from(a.0 - o.0), i128::from(a.1 - o.1));
+    let (bx, by) = (i128::from(b.0 - o.0), i128::from(b.1 - o.1));
+    ax * by - ay * bx
+}
+
+/// The strictly convex hull, counter-clockwise (Andrew).
+fn hull(pts: &[I]) -> Vec<I> {
+    let mut p = pts.to_vec();
+    p.sort_unstable();
+    p.dedup();
+    if p.len() < 3 {
+        return p;
+    }
+    let mut h: Vec<I> = Vec::new();
+    for pass in 0..2 {
+        let start = h.len();
+        let it: Vec<I> = if pass == 0 {
+            p.clone()
+        } else {
+            p.iter().rev().copied().collect()
+        };
+        for x in it {
+            while h.len() >= start + 2 && cross(h[h.len() - 2], h[h.len() - 1], x) <= 0 {
+                h.pop();
+            }
+            h.push(x);
+        }
+        h.pop();
+    }
+    h
+}
+
+/// A random simple polygon of one of several kinds, as integers (counter-clockwise).
+fn polygon(rng: &mut SplitMix64, size: usize) -> (Vec<I>, &'static str) {
+    let n = size.max(3);
+    match rng.below(5) {
+        0 => (ints(&two_opt(rng, n.min(40)), 20), "two_opt"),
+        1 => (ints(&star(rng, n, 1 + n / 4), 24), "star"),
+        2 => {
+            let per = 3 + rng.index(6) as u32;
+            let turns = 1 + (n as u32 / (2 * per)).min(6);
+            (ints(&spiral(per, turns), 20), "spiral")
+        }
+        3 => (
+            ints(
+                &comb(1 + n / 4, 1 + rng.below(4) as u32, 1 + rng.below(2) as u32),
+                0,
+            ),
+            "comb",
+        ),
+        _ => {
+            // A comb with every second vertex doubled into a collinear run (midpoints).
+            let c = ints(
+                &comb(1 + n / 6, 1 + rng.below(3) as u32, 1 + rng.below(2) as u32),
+                0,
+            );
+            let mut out = Vec::new();
+            for i in 0..c.len() {
+                let (a, b) = (c[i], c[(i + 1) % c.len()]);
+                out.push((2 * a.0, 2 * a.1));
+                if rng.coin() {
+                    out.push((a.0 + b.0, a.1 + b.1));
+                }
+            }
+            (out, "comb+collinear")
+        }
+    }
+}
+
+/// Two polygons with disjoint hulls, the line through a random edge of `P`'s hull (`P` touches
+/// it), `Q` translated along the outward normal to the least integer step strictly beyond plus
+/// `extra` steps, then everything rotated by an integer rotation and offset.
+#[allow(clippy::too_many_arguments, reason = "a test generator")]
+fn polygon_pair(
+    rng: &mut SplitMix64,
+    np: usize,
+    nq: usize,
+    extra: i64,
+    rot: I,
+    offset: DVec2,
+    open: bool,
+) -> Case {
+    let (p, kp) = polygon(rng, np);
+    let (q, kq) = polygon(rng, nq);
+    let h = hull(&p);
+    let i = rng.index(h.len());
+    let (h1, h2) = (h[i], h[(i + 1) % h.len()]);
+    let d = (h2.0 - h1.0, h2.1 - h1.1);
+    let n = (d.1, -d.0); // right of h1 → h2: outside P
+    let d2 = i128::from(d.0) * i128::from(d.0) + i128::from(d.1) * i128::from(d.1);
+    // Move q[0] onto h1 plus a random slide along the edge, then step outward.
+    let slide = rng.range_i64(-2, 3);
+    let s0 = (h1.0 - q[0].0 + slide * d.0, h1.1 - q[0].1 + slide * d.1);
+    let moved: Vec<I> = q.iter().map(|&v| (v.0 + s0.0, v.1 + s0.1)).collect();
+    // orient(h1, h2, v + k n) = cross(h1, h2, v) − k |d|² < 0 for all v.
+    let need = moved
+        .iter()
+        .map(|&v| cross(h1, h2, v).div_euclid(d2) + 1)
+        .max()
+        .unwrap_or(0);
+    let k = (need.max(0) as i64) + extra;
+    let q: Vec<I> = moved
+        .iter()
+        .map(|&v| (v.0 + k * n.0, v.1 + k * n.1))
+        .collect();
+    let place = |v: I| {
+        let (c, s) = rot;
+        DVec2::new(
+            (c * v.0 - s * v.1) as f64 + offset.x,
+            (s * v.0 + c * v.1) as f64 + offset.y,
+        )
+    };
+    let mut pw: Vec<DVec2> = p.iter().map(|&v| place(v)).collect();
+    let mut qw: Vec<DVec2> = q.iter().map(|&v| place(v)).collect();
+    let mut name = format!("{kp}({}) vs {kq}({}) extra {extra}", p.len(), q.len());
+    if open {
+        // Contiguous sub-chains (cyclically), at least one vertex: open, simple.
+        let cut = |rng: &mut SplitMix64, v: &[DVec2]| {
+            let (s, len) = (rng.index(v.len()), 1 + rng.index(v.len()));
+            (0..len).map(|t| v[(s + t) % v.len()]).collect::<Vec<_>>()
+        };
+        pw = cut(rng, &pw);
+        qw = cut(rng, &qw);
+        name.push_str(" open");
+    } else {
+        pw.push(pw[0]);
+        qw.push(qw[0]);
+    }
+    if rng.coin() {
+        pw.reverse();
+    }
+    if rng.coin() {
+        qw.reverse();
+    }
+    let (a, b) = if rng.coin() {
+        (place(h1), place(h2))
+    } else {
+        (place(h2), place(h1))
+    };
+    Case {
+        p: pw,
+        q: qw,
+        a,
+        b,
+        name,
+    }
+}
+
+/// Checks one case: σ and its features against the oracle, the brute force against the oracle, the
+/// envelopes against their twins, and (small cases) every matrix.
+fn agree<K: Kernel>(c: &Case, check_matrices: bool) {
+    assert!(simple_chain(&c.p) && simple_chain(&c.q), "{}", c.name);
+    let got = separation_of_chains::<K>(&c.p, &c.q, c.a, c.b)
+        .unwrap_or_else(|e| panic!("{} ({}): {e}\np={:?}\nq={:?}", c.name, K::NAME, c.p, c.q));
+    let exact = chain_distance(&c.p, &c.q);
+    let (fp, fq) = (
+        oracle_feature(got.pair.feature_p),
+        oracle_feature(got.pair.feature_q),
+    );
+    assert!(
+        exact.is_optimal_pair(fp, fq),
+        "{} ({}): got {:?} ({} vs exact {:?}), optimal {:?}\np={:?}\nq={:?}\nline {:?} {:?}",
+        c.name,
+        K::NAME,
+        (fp, fq),
+        got.pair.squared_distance,
+        polydist_oracle::to_f64_nearest(&exact.sq),
+        exact.pairs,
+        c.p,
+        c.q,
+        c.a,
+        c.b
+    );
+    assert!(
+        ulps_error_sqrt(got.pair.distance, &exact.sq) <= 3.5,
+        "{}",
+        c.name
+    );
+    let brute = separation_brute::<K>(&c.p, &c.q).unwrap();
+    assert!(
+        exact.is_optimal_pair(
+            oracle_feature(brute.feature_p),
+            oracle_feature(brute.feature_q)
+        ),
+        "{}: brute force",
+        c.name
+    );
+    for ch in [&c.p, &c.q] {
+        assert_eq!(
+            perpendicular_envelope::<K>(ch, c.a, c.b).unwrap(),
+            perpendicular_envelope_brute::<K>(ch, c.a, c.b).unwrap(),
+            "{}: envelope of {ch:?}",
+            c.name
+        );
+    }
+    if check_matrices {
+        let m = CvvMatrix::<K>::new(&c.p, &c.q, c.a, c.b).unwrap();
+        check_totally_monotone_by(&m, compare_entries::<K>)
+            .unwrap_or_else(|e| panic!("{}: CVV matrix not totally monotone: {e:?}", c.name));
+        assert_eq!(
+            row_minima_by(&m, compare_entries::<K>),
+            brute_force_row_minima_by(&m, compare_entries::<K>),
+            "{}",
+            c.name
+        );
+        for (p, q) in [(&c.p, &c.q), (&c.q, &c.p)] {
+            let m = CveMatrix::<K>::new(p, q, c.a, c.b).unwrap();
+            check_totally_monotone_by(&m, compare_edge_entries::<K>).unwrap_or_else(|e| {
+                panic!(
+                    "{}: CVE matrix not totally monotone: {e:?}\np={p:?}\nq={q:?}\nline {:?} {:?}",
+                    c.name, c.a, c.b
+                )
+            });
+            assert_eq!(
+                row_minima_by(&m, compare_edge_entries::<K>),
+                brute_force_row_minima_by(&m, compare_edge_entries::<K>),
+                "{}",
+                c.name
+            );
+        }
+    }
+}
+
+const ROTS: [I; 6] = [(1, 0), (0, 1), (3, 4), (-4, 3), (5, -12), (1, 1)];
+
+#[test]
+fn closed_polygons_small_with_matrix_checks() {
+    let mut rng = SplitMix64::new(0x601);
+    let mut ran = 0;
+    for size in [3usize, 4, 6, 9, 14] {
+        for _ in 0..120 {
+            let rot = ROTS[rng.index(ROTS.len())];
+            let extra = rng.range_i64(0, 3);
+            let c = polygon_pair(&mut rng, size, size, extra, rot, DVec2::ZERO, false);
+            agree::<Robust>(&c, c.p.len() + c.q.len() <= 60);
+            ran += 1;
+        }
+    }
+    assert!(ran >= 600);
+}
+
+#[test]
+fn open_subchains_of_polygons() {
+    let mut rng = SplitMix64::new(0x602);
+    for size in [3usize, 5, 8, 12, 20] {
+        for _ in 0..120 {
+            let rot = ROTS[rng.index(ROTS.len())];
+            let extra = rng.range_i64(0, 3);
+            let c = polygon_pair(&mut rng, size, size, extra, rot, DVec2::ZERO, true);
+            agree::<Robust>(&c, c.p.len() + c.q.len() <= 50);
+        }
+    }
+}
+
+#[test]
+fn exact_kernel_far_from_the_origin() {
+    let mut rng = SplitMix64::new(0x603);
+    for size in [3usize, 6, 10] {
+        for _ in 0..30 {
+            let rot = ROTS[rng.index(ROTS.len())];
+            let open = rng.coin();
+            let extra = rng.range_i64(0, 2);
+            let c = polygon_pair(
+                &mut rng,
+                size,
+                size,
+                extra,
+                rot,
+                DVec2::new(1e12, -3e12),
+                open,
+            );
+            agree::<Exact>(&c, c.p.len() + c.q.len() <= 40);
+            agree::<Robust>(&c, false);
+        }
+    }
+}
+
+/// A comb against a polygon, the line along the comb's spine (teeth perpendicular to the line,
+/// many vertices at equal heights, shadow points at vertices) or along its first tooth's outer side
+/// (teeth parallel to the line: the comb is far from monotone).
+#[test]
+fn combs_with_axis_aligned_lines() {
+    let mut rng = SplitMix64::new(0x604);
+    for teeth in [1usize, 2, 3, 5, 8] {
+        for (len, space) in [(1u32, 1u32), (3, 1), (2, 2)] {
+            let p = ints(&comb(teeth, len, space), 0);
+            for along_spine in [true, false] {
+                for _ in 0..4 {
+                    let (q, kq) = polygon(&mut rng, 6);
+                    // P is the comb: spine bottom y = -1 from x = 0; left side x = 0.
+                    let (h1, h2, n): (I, I, I) = if along_spine {
+                        ((0, -1), (1, -1), (0, -1))
+                    } else {
+                        ((0, 1), (0, 0), (-1, 0))
+                    };
+                    let qmin = |f: &dyn Fn(I) -> i64| q.iter().map(|&v| f(v)).min().unwrap();
+                    let qmax = |f: &dyn Fn(I) -> i64| q.iter().map(|&v| f(v)).max().unwrap();
+                    let gap = rng.range_i64(1, 3);
+                    // Move Q beyond the line along n by `gap` past its extreme vertex.
+                    let (dx, dy) = if along_spine {
+                        (
+                            rng.range_i64(-3, 5) - qmin(&|v| v.0),
+                            -1 - gap - qmax(&|v| v.1),
+                        )
+                    } else {
+                        (-gap - qmax(&|v| v.0), rng.range_i64(-3, 5) - qmin(&|v| v.1))
+                    };
+                    let _ = n;
+                    let mut pw: Vec<DVec2> = p
+                        .iter()
+                        .map(|&v| DVec2::new(v.0 as f64, v.1 as f64))
+                        .collect();
+                    let mut qw: Vec<DVec2> = q
+                        .iter()
+                        .map(|&v| DVec2::new((v.0 + dx) as f64, (v.1 + dy) as f64))
+                        .collect();
+                    pw.push(pw[0]);
+                    qw.push(qw[0]);
+                    let c = Case {
+                        p: pw,
+                        q: qw,
+                        a: DVec2::new(h1.0 as f64, h1.1 as f64),
+                        b: DVec2::new(h2.0 as f64, h2.1 as f64),
+                        name: format!("comb({teeth},{len},{space}) vs {kq} spine {along_spine}"),
+                    };
+                    agree::<Robust>(&c, c.p.len() + c.q.len() <= 60);
+                }
+            }
+        }
+    }
+}
+
+/// Q a few ulps from the line that P touches (coordinates below 2 in magnitude, multiples of
+/// `2^-52`: exact).
+#[test]
+fn nearly_touching_by_ulps() {
+    let mut rng = SplitMix64::new(0x605);
+    for ulps in [1i64, 2, 3, 4] {
+        for _ in 0..30 {
+            let (p, _) = polygon(&mut rng, 6);
+            let (q, kq) = polygon(&mut rng, 6);
+            let scale = |v: &[I]| {
+                let m = v
+                    .iter()
+                    .map(|w| w.0.abs().max(w.1.abs()))
+                    .max()
+                    .unwrap_or(1)
+                    .max(1) as f64;
+                v.iter()
+                    .map(|w| DVec2::new(w.0 as f64 / m / 2.0, w.1 as f64 / m / 2.0))
+                    .collect::<Vec<_>>()
+            };
+            // Scaling by a non-power of two may round: keep only exact simple results.
+            let (mut p, mut q) = (scale(&p), scale(&q));
+            let pmin = p.iter().map(|v| v.x).fold(f64::INFINITY, f64::min);
+            let qmax = q.iter().map(|v| v.x).fold(f64::NEG_INFINITY, f64::max);
+            let g = ulps as f64 * 2f64.powi(-52);
+            p.iter_mut().for_each(|v| v.x -= pmin);
+            q.iter_mut().for_each(|v| v.x = v.x - qmax - g);
+            p.push(p[0]);
+            q.push(q[0]);
+            if !simple_chain(&p) || !simple_chain(&q) || q.iter().any(|v| v.x >= 0.0) {
+                continue;
+            }
+            let c = Case {
+                p,
+                q,
+                a: DVec2::ZERO,
+                b: DVec2::Y,
+                name: format!("ulps {ulps} vs {kq}"),
+            };
+            agree::<Robust>(&c, c.p.len() + c.q.len() <= 40);
+        }
+    }
+}
+
+/// Two combs facing tip to tip across the line through `P`'s tips (teeth perpendicular to the line,
+/// every tip at one depth, shadow points at vertices), `Q`'s tips 0 to 4 ulps of its coordinates
+/// beyond, teeth aligned or shifted by half a pitch.
+#[test]
+fn combs_tip_to_tip_few_ulps_apart() {
+    for teeth in [1usize, 2, 5, 12] {
+        for len in [1u32, 3] {
+            let p = comb(teeth, len, 1);
+            let top = f64::from(len);
+            // One ulp of the largest coordinate of Q: every coordinate stays exact.
+            let u = (2.0 * top + 2.0).max(2.0 * teeth as f64 + 2.0);
+            let ulp = 2f64.powi(u.log2().floor() as i32 - 52);
+            for k in 1..=4 {
+                for shift in [0.0, 0.5, 1.0] {
+                    let g = k as f64 * ulp;
+                    let mut pw = p.clone();
+                    pw.push(pw[0]);
+                    let mut qw: Vec<DVec2> = p
+                        .iter()
+                        .map(|v| DVec2::new(v.x + shift, (2.0 * top - v.y) + g))
+                        .collect();
+                    qw.push(qw[0]);
+                    let c = Case {
+                        p: pw,
+                        q: qw,
+                        a: DVec2::new(0.0, top),
+                        b: DVec2::new(1.0, top),
+                        name: format!("combs({teeth},{len}) {k} ulps shift {shift}"),
+                    };
+                    agree::<Robust>(&c, teeth <= 5);
+                    agree::<Exact>(&c, false);
+                    let _ = separation_of_chains::<Fast>(&c.p, &c.q, c.a, c.b);
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn larger_spirals_and_combs_against_the_brute_force() {
+    let mut rng = SplitMix64::new(0x606);
+    for _ in 0..12 {
+        let c = polygon_pair(&mut rng, 60, 60, 1, (3, 4), DVec2::new(1e12, 1e12), false);
+        agree::<Robust>(&c, false);
+    }
+}
+
+#[test]
+fn fast_kernel_terminates() {
+    let mut rng = SplitMix64::new(0x607);
+    for size in [3usize, 8, 20, 60] {
+        for _ in 0..40 {
+            let open = rng.coin();
+            let c = polygon_pair(
+                &mut rng,
+                size,
+                size,
+                0,
+                (5, -12),
+                DVec2::new(1e12, -1e12),
+                open,
+            );
+            let _ = separation_of_chains::<Fast>(&c.p, &c.q, c.a, c.b);
+            let _ = perpendicular_envelope::<Fast>(&c.p, c.a, c.b);
+        }
+    }
+}
+
+/// The envelope of a spiral's outer chain (a closed polygon) against its twin, with a line through
+/// each hull edge in turn.
+#[test]
+fn envelope_of_spirals_and_stars_matches_the_twin() {
+    let mut rng = SplitMix64::new(0x608);
+    for (poly, name) in [
+        (ints(&spiral(5, 4), 20), "spiral"),
+        (ints(&spiral(8, 3), 20), "spiral"),
+        (ints(&star(&mut rng, 40, 7), 24), "star"),
+        (ints(&comb(6, 3, 1), 0), "comb"),
+    ] {
+        let h = hull(&poly);
+        let mut pw: Vec<DVec2> = poly
+            .iter()
+            .map(|&v| DVec2::new(v.0 as f64, v.1 as f64))
+            .collect();
+        pw.push(pw[0]);
+        for i in 0..h.len() {
+            let (a, b) = (h[i], h[(i + 1) % h.len()]);
+            let (a, b) = (
+                DVec2::new(a.0 as f64, a.1 as f64),
+                DVec2::new(b.0 as f64, b.1 as f64),
+            );
+            let fast = perpendicular_envelope::<Robust>(&pw, a, b).unwrap();
+            let brute = perpendicular_envelope_brute::<Robust>(&pw, a, b).unwrap();
+            assert_eq!(fast, brute, "{name}, hull edge {i}");
+            assert!(fast.vertices.len() >= 2);
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+    #[test]
+    fn proptest_polygons_agree_with_oracle(seed in any::<u64>(), size in 3usize..16,
+                                           open in any::<bool>(), far in any::<bool>(),
+                                           extra in 0i64..3) {
+        let mut rng = SplitMix64::new(seed);
+        let rot = ROTS[rng.index(ROTS.len())];
+        let off = if far { DVec2::new(-1e12, 4e12) } else { DVec2::ZERO };
+        let c = polygon_pair(&mut rng, size, size, extra, rot, off, open);
+        agree::<Robust>(&c, size <= 8);
+    }
+}
+
+/// The envelope against an independent exact definition (rationals, line `x = 0`, chains on
+/// `x ≥ 0`): at every vertex height the reported visible vertex (or none) is the unique nearest
+/// point, and at every height strictly between two consecutive visible vertices (all vertex heights
+/// there and the midpoints between them) the reported edge is the nearest.
+#[test]
+fn envelope_matches_exact_definition() {
+    use polydist_oracle::rat;
+    use polydist_predicates::BigRational;
+    let mut rng = SplitMix64::new(0x609);
+    let mut checked = 0;
+    for n in [3usize, 5, 8, 13, 20] {
+        for _ in 0..40 {
+            let poly: Vec<DVec2> = two_opt(&mut rng, n)
+                .into_iter()
+                .map(|v| DVec2::new(v.x + 1.0, v.y))
+                .collect();
+            let chain: Vec<DVec2> = if rng.coin() {
+                let mut c = poly.clone();
+                c.push(poly[0]);
+                c
+            } else {
+                let (s0, len) = (rng.index(n), 1 + rng.index(n));
+                (0..len).map(|t| poly[(s0 + t) % n]).collect()
+            };
+            let env = perpendicular_envelope::<Robust>(&chain, DVec2::ZERO, DVec2::Y).unwrap();
+            let r = |x: f64| rat(x).unwrap();
+            let segs: Vec<(DVec2, DVec2)> = chain.windows(2).map(|w| (w[0], w[1])).collect();
+            // Depths of the chain at height y: vertices there and edges crossing y.
+            let at = |y: &BigRational| -> Vec<(BigRational, Option<usize>)> {
+                let mut out = Vec::new();
+                for (i, v) in chain.iter().enumerate() {
+                    if r(v.y) == *y {
+                        out.push((r(v.x), Some(i)));
+                    }
+                }
+                for (a, b) in &segs {
+                    let (ya, yb) = (r(a.y), r(b.y));
+                    if (ya < *y && *y < yb) || (yb < *y && *y < ya) {
+                        let x = r(a.x) + (y - &ya) * (r(b.x) - r(a.x)) / (yb - ya);
+                        out.push((x, None));
+                    }
+                }
+                out
+            };
+            let nearest = |y: &BigRational| {
+                at(y)
+                    .into_iter()
+                    .min_by(|p, q| p.0.cmp(&q.0))
+                    .expect("a covered height")
+            };
+            // Visible vertices: exactly the vertex heights whose nearest point is a vertex.
+            let mut heights: Vec<BigRational> = chain.iter().map(|v| r(v.y)).collect();
+            heights.sort();
+            heights.dedup();
+            let vis: Vec<BigRational> = env.vertices.iter().map(|&i| r(chain[i].y)).collect();
+            for y in &heights {
+                let (x, who) = nearest(y);
+                match vis.iter().position(|h| h == y) {
+                    Some(k) => {
+                        assert_eq!(r(chain[env.vertices[k]].x), x, "{chain:?}");
+                        assert!(who.is_some(), "{chain:?}");
+                    }
+                    None => assert!(who.is_none(), "vertex at {y} missed in {chain:?}"),
+                }
+            }
+            // Between consecutive visible vertices, the reported edge is nearest.
+            for k in 0..env.edges.len() {
+                let (a, b) = segs[env.edges[k]];
+                let (lo, hi) = (&vis[k], &vis[k + 1]);
+                let mut ys: Vec<BigRational> = heights
+                    .iter()
+                    .filter(|h| lo < *h && *h < hi)
+                    .cloned()
+                    .collect();
+                ys.insert(0, lo.clone());
+                ys.push(hi.clone());
+                for w in ys.windows(2) {
+                    let y = (&w[0] + &w[1]) / BigRational::from_integer(2.into());
+                    let (x, _) = nearest(&y);
+                    let (ya, yb) = (r(a.y), r(b.y));
+                    let xe = r(a.x) + (&y - &ya) * (r(b.x) - r(a.x)) / (yb - ya);
+                    assert_eq!(x, xe, "edge {} at {y} in {chain:?}", env.edges[k]);
+                    checked += 1;
+                }
+            }
+        }
+    }
+    assert!(checked > 1000, "{checked}");
+}

@@ -1,0 +1,382 @@
+//! Whole simple polygons: the intersection check, the disjoint-hull fast path of `separation`, and
+//! point/segment–polygon distances, against the brute-force twins and the exact oracle.
+
+use glam::DVec2;
+use polydist_oracle::{
+    Contact, SplitMix64, boundary_distance, comb, contact_status_convex, contact_status_simple,
+    spiral, star, two_opt, ulps_error_sqrt,
+};
+use polydist_polygon::predicates::{Exact, Fast, Kernel, Robust};
+use polydist_polygon::{Feature, Location, SimplePolygon};
+use polydist_separation::{
+    Intersection, PolygonSeparation, Route, SeparationError, intersection, point_to_polygon,
+    polygon_separation_brute, segment_to_polygon, separation,
+};
+use proptest::prelude::*;
+
+fn oracle_feature(f: Feature) -> polydist_oracle::Feature {
+    match f {
+        Feature::Vertex(i) => polydist_oracle::Feature::Vertex(i),
+        Feature::Edge(i) => polydist_oracle::Feature::Edge(i),
+    }
+}
+
+/// A random simple polygon of one of the generator families, scaled and moved by dyadic amounts
+/// (exact), with about `n` vertices.
+fn shape(rng: &mut SplitMix64, n: usize) -> Vec<DVec2> {
+    let n = n.max(4);
+    match rng.below(4) {
+        0 => star(rng, n, n / 4),
+        1 => two_opt(rng, n.min(60)),
+        2 => {
+            let turns = 1 + rng.below(2) as u32;
+            let per_turn = (n as u32 / (2 * turns)).clamp(3, 64);
+            spiral(per_turn, turns)
+        }
+        _ => {
+            let teeth = (n / 4).clamp(1, 30);
+            comb(teeth, 1 + rng.below(5) as u32, 1 + rng.below(3) as u32)
+        }
+    }
+}
+
+fn bbox(p: &[DVec2]) -> (DVec2, DVec2) {
+    let lo = p.iter().fold(DVec2::splat(f64::INFINITY), |a, &b| a.min(b));
+    let hi = p
+        .iter()
+        .fold(DVec2::splat(f64::NEG_INFINITY), |a, &b| a.max(b));
+    (lo, hi)
+}
+
+/// `q` moved so that its bounding box is `gap` beyond `p`'s along the axis `axis` (0 = x, 1 = y) in
+/// the direction `dir` (±1), and slid along the other axis by `slide` times `p`'s extent. Exact when
+/// the sums are (dyadic inputs of moderate size).
+fn place_beside(
+    p: &[DVec2],
+    q: &[DVec2],
+    axis: usize,
+    dir: f64,
+    gap: f64,
+    slide: f64,
+) -> Vec<DVec2> {
+    let (plo, phi) = bbox(p);
+    let (qlo, qhi) = bbox(q);
+    let mut shift = DVec2::ZERO;
+    if dir > 0.0 {
+        shift[axis] = phi[axis] - qlo[axis] + gap;
+    } else {
+        shift[axis] = plo[axis] - qhi[axis] - gap;
+    }
+    let other = 1 - axis;
+    shift[other] = plo[other] - qlo[other] + slide * (phi[other] - plo[other]);
+    q.iter().map(|&v| v + shift).collect()
+}
+
+/// Checks one pair: the intersection check against the oracle and the brute force, and when the
+/// polygons are disjoint, `separation` against the oracle (exact optimal features, distance within
+/// 3.5 ulps) or `HullsIntersect` exactly when the hulls meet.
+fn check_pair<K: Kernel>(p: &[DVec2], q: &[DVec2]) -> Result<(), TestCaseError> {
+    let (Ok(sp), Ok(sq)) = (SimplePolygon::try_new(p), SimplePolygon::try_new(q)) else {
+        return Ok(());
+    };
+    // The oracle's simplicity check refuses repeated vertices: give it the cleaned rings.
+    let meets = contact_status_simple(sp.vertices(), sq.vertices()) != Contact::Disjoint;
+    prop_assert_eq!(intersection::<K>(&sp, &sq).is_some(), meets);
+    prop_assert_eq!(
+        sp.first_boundary_contact(&sq).is_some(),
+        sp.first_boundary_contact_brute(&sq).is_some()
+    );
+    let brute = polygon_separation_brute::<K>(&sp, &sq).expect("brute force answers");
+    match separation::<K>(&sp, &sq) {
+        Ok(PolygonSeparation::Intersecting(_)) => {
+            prop_assert!(meets);
+            prop_assert!(matches!(brute, PolygonSeparation::Intersecting(_)));
+        }
+        Ok(PolygonSeparation::Separated { pair, .. }) => {
+            prop_assert!(!meets);
+            let exact = boundary_distance(p, q);
+            prop_assert!(
+                exact.is_optimal_pair(
+                    oracle_feature(pair.feature_p),
+                    oracle_feature(pair.feature_q)
+                ),
+                "not optimal: {:?} {:?}",
+                pair.feature_p,
+                pair.feature_q
+            );
+            prop_assert!(ulps_error_sqrt(pair.distance, &exact.sq) <= 3.5);
+            let PolygonSeparation::Separated { pair: b, .. } = brute else {
+                return Err(TestCaseError::fail("brute force says intersecting"));
+            };
+            prop_assert!(
+                exact.is_optimal_pair(oracle_feature(b.feature_p), oracle_feature(b.feature_q))
+            );
+        }
+        Err(SeparationError::HullsIntersect) => {
+            prop_assert!(!meets);
+            let (hp, hq) = (sp.convex_hull(), sq.convex_hull());
+            prop_assert!(contact_status_convex(hp.vertices(), hq.vertices()) != Contact::Disjoint);
+        }
+        Err(e) => return Err(TestCaseError::fail(format!("unexpected error {e}"))),
+    }
+    Ok(())
+}
+
+/// Random placements of random shapes: beside each other (disjoint hulls, gaps from 0 to large),
+/// overlapping, and one inside the other.
+fn random_case(seed: u64) -> (Vec<DVec2>, Vec<DVec2>) {
+    let mut rng = SplitMix64::new(seed);
+    let n = 4 + rng.index(40);
+    let m = 4 + rng.index(40);
+    let p = shape(&mut rng, n);
+    let q = shape(&mut rng, m);
+    let axis = rng.index(2);
+    let dir = if rng.coin() { 1.0 } else { -1.0 };
+    let (lo, hi) = bbox(&p);
+    let extent = (hi - lo).max_element();
+    let gap = match rng.below(6) {
+        0 => 0.0,
+        1 => extent * 2f64.powi(-30),
+        2 => extent * 0.125,
+        3 => extent * 4.0,
+        4 => -extent * 0.25,
+        _ => -extent,
+    };
+    let slide = rng.range_i64(-4, 5) as f64 * 0.25;
+    let q = place_beside(&p, &q, axis, dir, gap, slide);
+    (p, q)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 300, ..ProptestConfig::default() })]
+
+    #[test]
+    fn random_pairs_robust(seed in any::<u64>()) {
+        let (p, q) = random_case(seed);
+        check_pair::<Robust>(&p, &q)?;
+    }
+
+    #[test]
+    fn random_pairs_far_from_origin(seed in any::<u64>()) {
+        let (p, q) = random_case(seed);
+        let o = DVec2::new(1e12, -1e12);
+        let (p, q): (Vec<DVec2>, Vec<DVec2>) = (p.iter().map(|&v| v + o).collect(), q.iter().map(|&v| v + o).collect());
+        check_pair::<Robust>(&p, &q)?;
+    }
+
+    #[test]
+    fn point_against_random_polygons(seed in any::<u64>(), fx in -2.0f64..2.0, fy in -2.0f64..2.0) {
+        let mut rng = SplitMix64::new(seed);
+        let n = 4 + rng.index(40);
+        let p = shape(&mut rng, n);
+        let sp = SimplePolygon::try_new(&p).expect("generators are simple");
+        let (lo, hi) = bbox(&p);
+        // A point in or around the box, sometimes a vertex or an edge midpoint exactly.
+        let x = match rng.below(4) {
+            0 => p[rng.index(p.len())],
+            1 => {
+                let i = rng.index(p.len());
+                (p[i] + p[(i + 1) % p.len()]) * 0.5
+            }
+            _ => lo + (hi - lo) * DVec2::new(fx, fy),
+        };
+        for d in [point_to_polygon::<Robust>(x, &sp).unwrap(), point_to_polygon::<Exact>(x, &sp).unwrap()] {
+            let exact = boundary_distance(&[x], &p);
+            prop_assert!(exact.is_optimal_pair(polydist_oracle::Feature::Vertex(0), oracle_feature(d.boundary.feature)));
+            prop_assert!(ulps_error_sqrt(d.boundary.distance, &exact.sq) <= 3.5);
+            prop_assert_eq!(d.location, sp.locate(x));
+            prop_assert_eq!(d.location == Location::Boundary, d.boundary.distance == 0.0);
+        }
+    }
+
+    #[test]
+    fn segment_against_random_polygons(seed in any::<u64>(), f in proptest::array::uniform4(-2.0f64..3.0)) {
+        let mut rng = SplitMix64::new(seed);
+        let n = 4 + rng.index(40);
+        let p = shape(&mut rng, n);
+        let sp = SimplePolygon::try_new(&p).expect("generators are simple");
+        let (lo, hi) = bbox(&p);
+        let at = |u: f64, v: f64| lo + (hi - lo) * DVec2::new(u, v);
+        let (a, b) = match rng.below(4) {
+            0 => (p[rng.index(p.len())], at(f[2], f[3])),
+            1 => (at(f[0], f[1]), at(f[0], f[1])),
+            _ => (at(f[0], f[1]), at(f[2], f[3])),
+        };
+        let exact = boundary_distance(&[a, b], &p);
+        for s in [segment_to_polygon::<Robust>(a, b, &sp).unwrap(), segment_to_polygon::<Exact>(a, b, &sp).unwrap()] {
+            match s {
+                PolygonSeparation::Separated { pair, .. } => {
+                    prop_assert!(sp.locate(a) == Location::Outside);
+                    prop_assert!(exact.is_optimal_pair(oracle_feature(pair.feature_p), oracle_feature(pair.feature_q)));
+                    prop_assert!(ulps_error_sqrt(pair.distance, &exact.sq) <= 3.5);
+                    prop_assert!(pair.distance > 0.0);
+                }
+                PolygonSeparation::Intersecting(Intersection::Boundaries { .. }) => {
+                    prop_assert!(num_traits::Zero::is_zero(&exact.sq));
+                }
+                PolygonSeparation::Intersecting(Intersection::Contained { .. }) => {
+                    prop_assert!(!num_traits::Zero::is_zero(&exact.sq));
+                    prop_assert_eq!(sp.locate(a), Location::Inside);
+                }
+            }
+        }
+    }
+
+    /// Arbitrary coordinates never panic, under Robust and Fast.
+    #[test]
+    fn arbitrary_points_never_panic(x in proptest::num::f64::ANY, y in proptest::num::f64::ANY, seed in any::<u64>()) {
+        let mut rng = SplitMix64::new(seed);
+        let p = shape(&mut rng, 12);
+        let sp = SimplePolygon::try_new(&p).expect("generators are simple");
+        let z = DVec2::new(x, y);
+        let _ = point_to_polygon::<Robust>(z, &sp);
+        let _ = point_to_polygon::<Fast>(z, &sp);
+        let _ = segment_to_polygon::<Robust>(z, p[0], &sp);
+        let _ = segment_to_polygon::<Fast>(p[1], z, &sp);
+    }
+}
+
+/// Both routes of the fast path run on the random family (a guard against a generator that never
+/// reaches section 3).
+#[test]
+fn both_routes_are_exercised() {
+    let (mut hulls, mut chains) = (0, 0);
+    for seed in 0..200 {
+        let (p, q) = random_case(seed);
+        let (Ok(sp), Ok(sq)) = (SimplePolygon::try_new(&p), SimplePolygon::try_new(&q)) else {
+            continue;
+        };
+        match separation::<Robust>(&sp, &sq) {
+            Ok(PolygonSeparation::Separated {
+                route: Route::HullFeatures,
+                ..
+            }) => hulls += 1,
+            Ok(PolygonSeparation::Separated {
+                route: Route::SeparableChains,
+                ..
+            }) => chains += 1,
+            _ => {}
+        }
+    }
+    assert!(
+        hulls >= 10 && chains >= 10,
+        "hull route {hulls}, chain route {chains}"
+    );
+}
+
+#[test]
+fn exact_kernel_agrees_on_random_pairs() {
+    for seed in 0..40 {
+        let (p, q) = random_case(seed);
+        check_pair::<Exact>(&p, &q).unwrap();
+    }
+}
+
+#[test]
+fn fast_kernel_terminates() {
+    for seed in 0..200 {
+        let (p, q) = random_case(seed);
+        let (Ok(sp), Ok(sq)) = (SimplePolygon::try_new(&p), SimplePolygon::try_new(&q)) else {
+            continue;
+        };
+        let _ = separation::<Fast>(&sp, &sq);
+    }
+}
+
+/// Touching at a shared vertex, along an edge, one vertex on the other's edge, one polygon in the
+/// other, and a gap of one ulp.
+#[test]
+fn touching_contained_and_nearly_touching() {
+    let sq = |x: f64, y: f64, s: f64| {
+        vec![
+            DVec2::new(x, y),
+            DVec2::new(x + s, y),
+            DVec2::new(x + s, y + s),
+            DVec2::new(x, y + s),
+        ]
+    };
+    let a = sq(0.0, 0.0, 1.0);
+    let cases: Vec<(Vec<DVec2>, bool)> = vec![
+        (sq(1.0, 1.0, 1.0), true), // shared vertex
+        (sq(1.0, 0.5, 1.0), true), // along an edge
+        (
+            vec![
+                DVec2::new(1.0, 0.5),
+                DVec2::new(2.0, 0.0),
+                DVec2::new(2.0, 1.0),
+            ],
+            true,
+        ), // vertex on an edge
+        (sq(0.25, 0.25, 0.5), true), // inside
+        (sq(-1.0, -1.0, 3.0), true), // around
+        (sq(1.0f64.next_up(), 0.5, 1.0), false), // one ulp away
+        (sq(1.0f64.next_up(), 1.0f64.next_up(), 1.0), false),
+    ];
+    for (b, meets) in cases {
+        let (pa, pb) = (
+            SimplePolygon::try_new(&a).unwrap(),
+            SimplePolygon::try_new(&b).unwrap(),
+        );
+        assert_eq!(intersection::<Robust>(&pa, &pb).is_some(), meets, "{b:?}");
+        assert_eq!(intersection::<Robust>(&pb, &pa).is_some(), meets, "{b:?}");
+        assert_eq!(contact_status_simple(&a, &b) != Contact::Disjoint, meets);
+        if !meets {
+            check_pair::<Robust>(&a, &b).unwrap();
+            check_pair::<Exact>(&b, &a).unwrap();
+        }
+    }
+}
+
+/// Interlocked shapes (hulls meet, polygons disjoint) are refused with the typed error, not answered
+/// by a brute force.
+#[test]
+fn interlocked_combs_need_the_separator() {
+    let pair = polydist_oracle::interleaved_combs(6, 5, 0.125);
+    let (p, q) = (
+        SimplePolygon::try_new(&pair.a).unwrap(),
+        SimplePolygon::try_new(&pair.b).unwrap(),
+    );
+    assert_eq!(intersection::<Robust>(&p, &q), None);
+    assert_eq!(
+        separation::<Robust>(&p, &q),
+        Err(SeparationError::HullsIntersect)
+    );
+    assert!(matches!(
+        polygon_separation_brute::<Robust>(&p, &q),
+        Ok(PolygonSeparation::Separated { .. })
+    ));
+}
+
+/// Caller indices: a ring given clockwise, closed, with repeated and collinear vertices.
+#[test]
+fn caller_features_survive_cleaning() {
+    // Clockwise square with a repeat at index 1 and a collinear vertex at index 3, closed at index 6.
+    let p = vec![
+        DVec2::new(0.0, 0.0),
+        DVec2::new(0.0, 0.0),
+        DVec2::new(0.0, 2.0),
+        DVec2::new(1.0, 2.0),
+        DVec2::new(2.0, 2.0),
+        DVec2::new(2.0, 0.0),
+        DVec2::new(0.0, 0.0),
+    ];
+    let q = vec![
+        DVec2::new(1.5, 3.0),
+        DVec2::new(3.0, 5.0),
+        DVec2::new(0.0, 5.0),
+    ];
+    let (sp, sq) = (
+        SimplePolygon::try_new(&p).unwrap(),
+        SimplePolygon::try_new(&q).unwrap(),
+    );
+    let PolygonSeparation::Separated { pair, .. } = separation::<Robust>(&sp, &sq).unwrap() else {
+        panic!("disjoint");
+    };
+    // Q's vertex (1.5, 3) is nearest to the caller's edge 3 (from (1, 2) to (2, 2)), at distance 1.
+    assert_eq!(
+        (pair.feature_p, pair.feature_q),
+        (Feature::Edge(3), Feature::Vertex(0))
+    );
+    assert_eq!(pair.distance, 1.0);
+    check_pair::<Robust>(&p, &q).unwrap();
+}
