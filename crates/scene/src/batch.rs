@@ -247,7 +247,10 @@ fn answer_line<K: Kernel>(line: u64, text: &str, options: &BatchOptions) -> Resu
                 ));
             }
             Effect::Separation => {
-                return Err(fail("separation is not yet available".to_owned()));
+                return Err(fail(
+                    "separation is not available in batch mode (convex pairs only): use a scene"
+                        .to_owned(),
+                ));
             }
             _ => {}
         }

@@ -188,7 +188,7 @@ pub enum SceneError {
     },
     /// An effect needs convex bodies and the pair has a simple (non-convex) body.
     #[error(
-        "{query}: effect `{effect}` on ['{a}', '{b}'] needs convex bodies, and '{body}' is a simple polygon (simple polygons get distances with the separation algorithm, not yet available)"
+        "{query}: effect `{effect}` on ['{a}', '{b}'] needs convex bodies, and '{body}' is a simple polygon (ask `separation` for the distance of simple polygons)"
     )]
     NeedsConvex {
         /// The query's name.

@@ -16,7 +16,8 @@
 //!   `distance` and `closest_points` share one convex distance query (Yang 2006, `O(log n + log m)`,
 //!   with temporal coherence), `vertex_distance` is McKenna–Toussaint (`O(n + m)`), `first_contact`
 //!   is conservative advancement (Schwartz 1981) with a bracket confirmed by the exact intersection
-//!   test or a certified clearance, `hausdorff` and `cmmr` are Atallah–Ribeiro–Lifschitz (`O(n + m)`);
+//!   test or a certified clearance, `hausdorff` and `cmmr` are Atallah–Ribeiro–Lifschitz (`O(n + m)`),
+//!   `separation` takes simple bodies (Amato 1992 through `polydist_separation::separation`);
 //!   the [`Report`] says what each effect computed and what it cost;
 //! - answers queries with `within` over many bodies through a broad phase ([`sweep_and_prune`] with a
 //!   certified box gap, on the axis of larger spread): an all-pairs query with `within` evaluates
@@ -25,9 +26,9 @@
 //! - answers pairs of polygons as JSON lines ([`batch_pairs`], [`batch_within`]; docs/batch.md);
 //! - draws a run as SVG ([`render_svg`]).
 //!
-//! `separation` is parsed but refused by the loader with
-//! [`SceneError::EffectNotYetAvailable`] until its algorithm is wired in; every effect of this
-//! version needs convex bodies ([`SceneError::NeedsConvex`]).
+//! Every effect but `separation` needs convex bodies ([`SceneError::NeedsConvex`]); `separation` of
+//! simple bodies whose convex hulls meet is reported per frame as `unsupported` (Amato's separators
+//! are not built yet), and the run goes on.
 //!
 //! # Numbers
 //! Posed polygons are rounded coordinates: every decision is exact for them (under the Robust and

@@ -432,7 +432,10 @@ pub fn validate(spec: &SceneSpec, origin: &Origin) -> Result<Scene, SceneErrors>
         // Convex-only effects on pairs with a simple body: reported once per query and simple
         // body (at its first pair), not once per pair of an "all" query.
         let needs_convex = |errors: &mut Vec<SceneError>, a: usize, b: usize, s: usize| {
-            for e in effects.iter().filter(|e| e.is_available()) {
+            for e in effects
+                .iter()
+                .filter(|e| e.is_available() && e.needs_convex())
+            {
                 errors.push(SceneError::NeedsConvex {
                     query: name.clone(),
                     effect: e.name(),

@@ -95,6 +95,12 @@ pub enum Status {
     /// The pair is farther apart than its query's `within` (decided exactly, by the broad phase's
     /// certified box gap or by the narrow phase); no other field is computed.
     Beyond,
+    /// The closed bodies meet (from `separation`, which does not tell touching from overlapping for
+    /// simple polygons).
+    Intersecting,
+    /// The pair needs an algorithm this version lacks (see `error`): `separation` of bodies whose
+    /// convex hulls meet needs Amato's separators, not built yet.
+    Unsupported,
 }
 
 /// A feature in the body's own (caller's) vertex indices.
@@ -134,6 +140,27 @@ pub struct ClosestPoints {
     pub feature_b: FeatureRef,
     /// `true` when the bodies face each other along parallel edges (the realizing pair is then not unique).
     pub parallel: bool,
+}
+
+/// The separation of two bodies at a frame (their boundaries' distance, Amato 1992), with a realizing
+/// pair.
+#[derive(Clone, Copy, Debug, Serialize, PartialEq)]
+pub struct SeparationResult {
+    /// The distance between the boundaries (within 3.5 ulps of the exact value for the posed bodies).
+    pub distance: f64,
+    /// Its square.
+    pub squared_distance: f64,
+    /// The realizing point on `a` (world frame).
+    pub point_a: [f64; 2],
+    /// The realizing point on `b`.
+    pub point_b: [f64; 2],
+    /// The feature of `a` containing `point_a`.
+    pub feature_a: FeatureRef,
+    /// The feature of `b` containing `point_b`.
+    pub feature_b: FeatureRef,
+    /// How it was found: `hull_features` (the hulls' closest features lie on both boundaries) or
+    /// `separable_chains` (section 3 across a line through a hull edge).
+    pub route: &'static str,
 }
 
 /// One directed Hausdorff distance `h(from, to)` of the filled bodies: the realizing vertex of `from`
@@ -211,7 +238,10 @@ pub struct FrameResult {
     /// other filled body (compensated sum of exactly chosen terms).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub cmmr: Option<f64>,
-    /// Why the frame could not be evaluated (`status` is `invalid`).
+    /// When `separation` was asked and the bodies are disjoint.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub separation: Option<SeparationResult>,
+    /// Why the frame could not be evaluated (`status` is `invalid` or `unsupported`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub error: Option<String>,
 }
@@ -288,6 +318,9 @@ pub struct Costs {
     pub hausdorff: Cost,
     /// CMMR distance queries (Atallah–Ribeiro–Lifschitz).
     pub cmmr: Cost,
+    /// Separation queries of simple bodies (Amato), including re-validating the posed bodies as
+    /// simple polygons.
+    pub separation: Cost,
     /// `first_contact`: `calls` are pairs; their distance queries and probes are counted here (not in
     /// `distance`).
     pub first_contact: Cost,
@@ -343,6 +376,7 @@ impl Costs {
             vertex_distance: self.vertex_distance.merge(o.vertex_distance),
             hausdorff: self.hausdorff.merge(o.hausdorff),
             cmmr: self.cmmr.merge(o.cmmr),
+            separation: self.separation.merge(o.separation),
             first_contact: self.first_contact.merge(o.first_contact),
             first_contact_steps: self.first_contact_steps + o.first_contact_steps,
             first_contact_intersection_tests: self.first_contact_intersection_tests
@@ -366,6 +400,7 @@ impl Costs {
             &mut self.vertex_distance,
             &mut self.hausdorff,
             &mut self.cmmr,
+            &mut self.separation,
             &mut self.first_contact,
             &mut self.broad_phase,
         ] {
@@ -388,6 +423,7 @@ impl FrameResult {
             vertex_distance: None,
             hausdorff: None,
             cmmr: None,
+            separation: None,
             error: None,
         }
     }
@@ -472,6 +508,7 @@ impl Report {
         cost("vertex_distance", &c.vertex_distance);
         cost("hausdorff", &c.hausdorff);
         cost("cmmr", &c.cmmr);
+        cost("separation", &c.separation);
         cost("first_contact", &c.first_contact);
         cost("broad_phase", &c.broad_phase);
         let _ = writeln!(
@@ -546,7 +583,8 @@ fn pair_lines(p: &PairReport) -> Vec<(String, String)> {
             Status::Disjoint => "",
             Status::Touching => " (touching)",
             Status::Overlapping => " (overlapping)",
-            Status::Invalid | Status::Beyond => "",
+            Status::Intersecting => " (intersecting)",
+            Status::Invalid | Status::Beyond | Status::Unsupported => "",
         });
         let label = if p.moving { "min " } else { "" };
         out.push((
@@ -630,6 +668,33 @@ fn pair_lines(p: &PairReport) -> Vec<(String, String)> {
                 when(f)
             ),
         ));
+    }
+    if p.effects.contains(&"separation") {
+        let by_separation = frames
+            .iter()
+            .filter_map(|f| f.separation.map(|r| (f, r)))
+            .min_by(|x, y| x.1.distance.total_cmp(&y.1.distance));
+        let meeting = frames
+            .iter()
+            .find(|f| f.status == Some(Status::Intersecting));
+        let text = match (meeting, by_separation) {
+            (Some(f), _) => Some(format!("0: the bodies meet{}", when(f))),
+            (None, Some((f, r))) => Some(format!(
+                "{}{} ({} on {} – {} on {}, {}){}",
+                if p.moving { "min " } else { "" },
+                fmt_num(r.distance),
+                fmt_point(r.point_a),
+                fmt_feature(r.feature_a),
+                fmt_point(r.point_b),
+                fmt_feature(r.feature_b),
+                r.route,
+                when(f)
+            )),
+            (None, None) => None,
+        };
+        if let Some(text) = text {
+            out.push(("separation".to_owned(), text));
+        }
     }
     if let Some(c) = &p.first_contact {
         let text = match c.outcome {

@@ -38,6 +38,7 @@
 //! pairs run in parallel too. Costs are measured per call on the calling thread and summed, so a
 //! report is the same on any number of threads.
 
+use std::borrow::Cow;
 use std::collections::HashMap;
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::time::Instant;
@@ -50,7 +51,8 @@ use polydist_convex::{
     distance_with_hint, distance_within, hausdorff_with, intersects, min_vertex_distance_with,
 };
 use polydist_polygon::predicates::{Counted, Exact, Fast, Kernel, Robust, predicate_counts};
-use polydist_polygon::{ConvexPolygon, Feature, PolygonError};
+use polydist_polygon::{ConvexPolygon, Feature, PolygonError, SimplePolygon};
+use polydist_separation::{PolygonSeparation, Route, separation};
 
 use crate::broad::{Aabb, sweep_classes};
 use crate::load::{
@@ -59,7 +61,8 @@ use crate::load::{
 use crate::motion::{Motion, down, pose_error, relative_speed_bound, up};
 use crate::report::{
     ClosestPoints, ContactOutcome, ContactResult, Cost, Costs, DirectedHausdorff, FrameResult,
-    HausdorffResult, PairReport, Report, Status, TimeReport, VertexDistanceResult,
+    HausdorffResult, PairReport, Report, SeparationResult, Status, TimeReport,
+    VertexDistanceResult,
 };
 use crate::spec::{Effect, EffectSet, KernelChoice};
 
@@ -396,10 +399,13 @@ pub fn run_with_progress(
 }
 
 /// A body placed at a time: the re-validated polygon (its caller index `k` is the body's internal
-/// vertex `k`) and the pose.
+/// vertex `k`) and the pose. For a simple body, `simple` is the posed polygon and `poly` its convex
+/// hull (used for bounding boxes and the exact `within` test: the hulls' distance is a lower bound of
+/// the separation); no convex effect takes a simple body (the loader refuses them).
 pub(crate) struct Posed {
     pub(crate) poly: ConvexPolygon,
     pub(crate) pose: Pose,
+    pub(crate) simple: Option<SimplePolygon>,
 }
 
 /// Measures the calls, predicates and time of a stage.
@@ -902,43 +908,65 @@ fn run_with<K: Kernel>(
 /// pose and validated again, so that the posed polygon's caller index `k` is the body's internal
 /// vertex `k`. An error names the body, the time and the body's own (caller) vertex.
 pub(crate) fn pose_body(body: &Body, t: f64) -> Result<Posed, String> {
-    let Shape::Convex(poly) = &body.shape else {
-        // The loader refuses every effect on simple bodies in this version (NeedsConvex).
-        return Err(format!(
-            "body '{}' is a simple polygon: no effect of this version takes it",
-            body.id
-        ));
-    };
     let pose = body.motion.pose_at(t);
+    let poly = match &body.shape {
+        Shape::Convex(poly) => poly,
+        Shape::Simple(sp) => {
+            // Re-validated as a simple polygon (rounding may make it touch itself); its hull serves
+            // the bounding boxes and the `within` test.
+            return posed_simple(sp.vertices(), pose)
+                .map(|s| Posed {
+                    poly: s.convex_hull(),
+                    pose,
+                    simple: Some(s),
+                })
+                .map_err(|e| {
+                    format!(
+                        "body '{}' is not a valid simple polygon at t = {t} after its rigid motion was rounded: {}",
+                        body.id,
+                        caller_error(sp.len(), |i| sp.source_index(i), e)
+                    )
+                });
+        }
+    };
     let moved: Vec<DVec2> = poly.vertices().iter().map(|&v| pose.apply(v)).collect();
     ConvexPolygon::try_new(&moved)
-        .map(|p| Posed { poly: p, pose })
+        .map(|p| Posed {
+            poly: p,
+            pose,
+            simple: None,
+        })
         .map_err(|e| {
             format!(
                 "body '{}' is not a valid convex polygon at t = {t} after its rigid motion was rounded: {}",
                 body.id,
-                caller_error(poly, e)
+                caller_error(poly.len(), |i| poly.source_index(i), e)
             )
         })
 }
 
-/// A posed polygon's error with its vertex index (an internal index of the body) in the body's
-/// caller indices.
-fn caller_error(poly: &ConvexPolygon, e: PolygonError) -> PolygonError {
-    let map = |i: usize| {
-        if i < poly.len() {
-            poly.source_index(i)
-        } else {
-            i
-        }
-    };
+/// A posed polygon's error with its vertex indices (internal indices of the body, `len` of them,
+/// named by `source` in the body's caller indices) in the body's caller indices.
+fn caller_error(len: usize, source: impl Fn(usize) -> usize, e: PolygonError) -> PolygonError {
+    let map = |i: usize| if i < len { source(i) } else { i };
     match e {
         PolygonError::NonFinite { index } => PolygonError::NonFinite { index: map(index) },
         PolygonError::OutOfRange { index } => PolygonError::OutOfRange { index: map(index) },
         PolygonError::Spike { index } => PolygonError::Spike { index: map(index) },
         PolygonError::NotConvex { index } => PolygonError::NotConvex { index: map(index) },
+        PolygonError::SelfIntersection { edge_a, edge_b } => PolygonError::SelfIntersection {
+            edge_a: map(edge_a),
+            edge_b: map(edge_b),
+        },
         other => other,
     }
+}
+
+/// The body's internal vertices moved by the pose, validated as a simple polygon (its caller index
+/// `k` is the body's internal vertex `k`).
+fn posed_simple(internal: &[DVec2], pose: Pose) -> Result<SimplePolygon, PolygonError> {
+    let moved: Vec<DVec2> = internal.iter().map(|&v| pose.apply(v)).collect();
+    SimplePolygon::try_new(&moved)
 }
 
 /// The inverse of a pose, rounded (used only to pick a caller edge along an internal edge that
@@ -949,6 +977,44 @@ fn unapply(pose: Pose, x: DVec2) -> DVec2 {
     DVec2::new(c * d.x + s * d.y, c * d.y - s * d.x)
 }
 
+/// A body's polygon (convex or simple) as a map from its internal vertices and edges to the caller's.
+trait CallerMap {
+    fn internal_len(&self) -> usize;
+    fn caller_count(&self) -> usize;
+    fn source(&self, v: usize) -> usize;
+    fn on_edge<K: Kernel>(&self, e: usize, q: DVec2) -> Option<Feature>;
+}
+
+impl CallerMap for ConvexPolygon {
+    fn internal_len(&self) -> usize {
+        self.len()
+    }
+    fn caller_count(&self) -> usize {
+        self.caller_len()
+    }
+    fn source(&self, v: usize) -> usize {
+        self.source_index(v)
+    }
+    fn on_edge<K: Kernel>(&self, e: usize, q: DVec2) -> Option<Feature> {
+        self.caller_feature_on_edge::<K>(e, q)
+    }
+}
+
+impl CallerMap for SimplePolygon {
+    fn internal_len(&self) -> usize {
+        self.len()
+    }
+    fn caller_count(&self) -> usize {
+        self.caller_len()
+    }
+    fn source(&self, v: usize) -> usize {
+        self.source_index(v)
+    }
+    fn on_edge<K: Kernel>(&self, e: usize, q: DVec2) -> Option<Feature> {
+        self.caller_feature_on_edge::<K>(e, q)
+    }
+}
+
 /// A feature of a posed polygon (internal indices of `poly`) as the body's caller feature. `x` is
 /// the other body's realizing point (world frame).
 ///
@@ -956,19 +1022,19 @@ fn unapply(pose: Pose, x: DVec2) -> DVec2 {
 /// vertices is that caller edge, exactly. An internal edge running through dropped caller vertices
 /// (collinear or repeated) is resolved by `caller_feature_on_edge` at `x` moved back by the inverse
 /// pose, a rounded point: not an exact decision when `x` is within rounding of a dropped vertex.
-fn caller_feature<K: Kernel>(poly: &ConvexPolygon, pose: Pose, f: Feature, x: DVec2) -> Feature {
+fn caller_feature<K: Kernel, P: CallerMap>(poly: &P, pose: Pose, f: Feature, x: DVec2) -> Feature {
     match f {
-        Feature::Vertex(k) => Feature::Vertex(poly.source_index(k)),
+        Feature::Vertex(k) => Feature::Vertex(poly.source(k)),
         Feature::Edge(k) => {
-            let n = poly.len();
-            let l = poly.caller_len();
-            let (a, b) = (poly.source_index(k), poly.source_index((k + 1) % n));
+            let n = poly.internal_len();
+            let l = poly.caller_count();
+            let (a, b) = (poly.source(k), poly.source((k + 1) % n));
             if (a + 1) % l == b {
                 Feature::Edge(a)
             } else if (b + 1) % l == a {
                 Feature::Edge(b)
             } else {
-                poly.caller_feature_on_edge::<K>(k, unapply(pose, x))
+                poly.on_edge::<K>(k, unapply(pose, x))
                     .unwrap_or(Feature::Edge(a))
             }
         }
@@ -987,11 +1053,25 @@ pub(crate) fn eval_frame<K: Kernel>(
 ) -> FrameResult {
     let mut out = FrameResult::empty(t, Status::Disjoint);
     out.status = None;
-    let (Shape::Convex(poly_a), Shape::Convex(poly_b)) = (&ba.shape, &bb.shape) else {
+    let convex = match (&ba.shape, &bb.shape) {
+        (Shape::Convex(a), Shape::Convex(b)) => Some((a, b)),
+        _ => None,
+    };
+    let convex_effects = [
+        Effect::Distance,
+        Effect::ClosestPoints,
+        Effect::VertexDistance,
+        Effect::Hausdorff,
+        Effect::Cmmr,
+    ]
+    .into_iter()
+    .any(|e| ask.effects.contains(e));
+    if convex_effects && convex.is_none() {
+        // The loader refuses convex effects on simple bodies (NeedsConvex): not reached from a scene.
         out.status = Some(Status::Invalid);
         out.error = Some("a body is not convex".to_owned());
         return out;
-    };
+    }
     let mut known: Option<Separation> = None;
     if let Some(r) = ask.within {
         // The threshold, decided exactly; the answer's separation serves the distance effects.
@@ -1005,6 +1085,12 @@ pub(crate) fn eval_frame<K: Kernel>(
             Within::Inside(sep) => known = Some(sep),
         }
     }
+    if ask.effects.contains(Effect::Separation) {
+        separation_frame::<K>((ba, pa), (bb, pb), &mut out, meter, costs);
+    }
+    let Some((poly_a, poly_b)) = convex else {
+        return out;
+    };
     if ask.needs_distance() {
         let sep = match (known, hint) {
             (Some(sep), _) => sep,
@@ -1028,8 +1114,10 @@ pub(crate) fn eval_frame<K: Kernel>(
                 Some(ClosestPoints {
                     point_a: c.point_p.to_array(),
                     point_b: c.point_q.to_array(),
-                    feature_a: caller_feature::<K>(poly_a, pa.pose, c.feature_p, c.point_q).into(),
-                    feature_b: caller_feature::<K>(poly_b, pb.pose, c.feature_q, c.point_p).into(),
+                    feature_a: caller_feature::<K, _>(poly_a, pa.pose, c.feature_p, c.point_q)
+                        .into(),
+                    feature_b: caller_feature::<K, _>(poly_b, pb.pose, c.feature_q, c.point_p)
+                        .into(),
                     parallel: c.parallel,
                 }),
             ),
@@ -1042,8 +1130,8 @@ pub(crate) fn eval_frame<K: Kernel>(
                 Some(ClosestPoints {
                     point_a: point.to_array(),
                     point_b: point.to_array(),
-                    feature_a: caller_feature::<K>(poly_a, pa.pose, feature_p, point).into(),
-                    feature_b: caller_feature::<K>(poly_b, pb.pose, feature_q, point).into(),
+                    feature_a: caller_feature::<K, _>(poly_a, pa.pose, feature_p, point).into(),
+                    feature_b: caller_feature::<K, _>(poly_b, pb.pose, feature_q, point).into(),
                     parallel: false,
                 }),
             ),
@@ -1083,7 +1171,7 @@ pub(crate) fn eval_frame<K: Kernel>(
                 projection: d.projection.to_array(),
                 feature: d
                     .feature
-                    .map(|f| caller_feature::<K>(to, to_pose, f, d.point).into()),
+                    .map(|f| caller_feature::<K, _>(to, to_pose, f, d.point).into()),
             }
         };
         out.hausdorff = Some(Box::new(HausdorffResult {
@@ -1102,6 +1190,76 @@ pub(crate) fn eval_frame<K: Kernel>(
             Some(meter.measure(&mut costs.cmmr, || cmmr_value_with::<K>(&pa.poly, &pb.poly)));
     }
     out
+}
+
+/// The `separation` effect of one pair at one frame (Amato 1992 through
+/// [`polydist_separation::separation`]): both bodies as posed simple polygons (a simple body's posed
+/// polygon, or a convex body's posed vertices validated as a simple polygon), features mapped back to
+/// the bodies' caller indices. Disjoint: `out.separation` (status `disjoint` unless a convex effect
+/// sets a finer one); meeting: status `intersecting`; hulls meeting without the polygons meeting:
+/// status `unsupported` with the error (Amato's separators are not built yet); a body without area:
+/// status `invalid`.
+fn separation_frame<K: Kernel>(
+    (ba, pa): (&Body, &Posed),
+    (bb, pb): (&Body, &Posed),
+    out: &mut FrameResult,
+    meter: &Meter,
+    costs: &mut Costs,
+) {
+    fn as_simple<'p>(b: &Body, p: &'p Posed) -> Result<Cow<'p, SimplePolygon>, String> {
+        match (&p.simple, &b.shape) {
+            (Some(s), _) => Ok(Cow::Borrowed(s)),
+            (None, Shape::Convex(poly)) => posed_simple(poly.vertices(), p.pose)
+                .map(Cow::Owned)
+                .map_err(|e| {
+                    format!(
+                        "separation needs polygons with area: body '{}' ({} vertices) is not one: {e}",
+                        b.id,
+                        poly.len()
+                    )
+                }),
+            (None, Shape::Simple(_)) => Err(format!("body '{}' was not posed", b.id)),
+        }
+    }
+    let answer = meter.measure(&mut costs.separation, || {
+        let (sa, sb) = (as_simple(ba, pa)?, as_simple(bb, pb)?);
+        Ok::<_, String>((separation::<K>(&sa, &sb), sa, sb))
+    });
+    match answer {
+        Err(message) => {
+            out.status = Some(Status::Invalid);
+            out.error = Some(message);
+        }
+        Ok((Ok(PolygonSeparation::Separated { pair, route, .. }), _, _)) => {
+            // The posed polygons' caller indices are the bodies' internal vertices.
+            let feature = |b: &Body, p: &Posed, f: Feature, x: DVec2| match &b.shape {
+                Shape::Convex(poly) => caller_feature::<K, _>(poly, p.pose, f, x),
+                Shape::Simple(sp) => caller_feature::<K, _>(sp, p.pose, f, x),
+            };
+            out.status.get_or_insert(Status::Disjoint);
+            out.separation = Some(SeparationResult {
+                distance: pair.distance,
+                squared_distance: pair.squared_distance,
+                point_a: pair.point_p.to_array(),
+                point_b: pair.point_q.to_array(),
+                feature_a: feature(ba, pa, pair.feature_p, pair.point_q).into(),
+                feature_b: feature(bb, pb, pair.feature_q, pair.point_p).into(),
+                route: match route {
+                    Route::HullFeatures => "hull_features",
+                    Route::SeparableChains => "separable_chains",
+                    Route::BruteForce => "brute_force",
+                    Route::Scan => "scan",
+                },
+            });
+        }
+        Ok((Ok(PolygonSeparation::Intersecting(_)), _, _)) => {
+            out.status = Some(Status::Intersecting);
+        }
+        Ok((Err(e), _, _)) => {
+            out.status = Some(Status::Unsupported);
+            out.error = Some(format!("separation of '{}' and '{}': {e}", ba.id, bb.id));
+        }
+    }
 }
 
 /// A certified lower bound on the exact distance of the exactly posed bodies, from the computed
@@ -1322,6 +1480,7 @@ mod tests {
     #[test]
     fn certified_is_below_the_distance() {
         let p = Posed {
+            simple: None,
             poly: ConvexPolygon::try_new(&[DVec2::ZERO]).unwrap(),
             pose: Pose {
                 translation: DVec2::new(100.0, 0.0),

@@ -284,8 +284,8 @@ impl<'de> Deserialize<'de> for PairsSpec {
     }
 }
 
-/// An effect a query asks for. All seven of the issue; `hausdorff`, `cmmr` and `separation` are
-/// recognised but not yet available (see [`SceneError::EffectNotYetAvailable`](crate::SceneError)).
+/// An effect a query asks for: all seven of the issue, every one available. `separation` takes simple
+/// (and convex) bodies; the others need convex bodies.
 #[derive(Clone, Copy, Debug, Deserialize, Serialize, PartialEq, Eq, Hash, PartialOrd, Ord)]
 #[serde(rename_all = "snake_case")]
 pub enum Effect {
@@ -299,7 +299,8 @@ pub enum Effect {
     Hausdorff,
     /// The CMMR distance of the filled bodies (convex bodies).
     Cmmr,
-    /// The separation of simple polygons (not yet available).
+    /// The separation σ of two simple polygons per frame (Amato 1992): the distance between their
+    /// boundaries with a realizing pair, or that they meet. Takes simple and convex bodies with area.
     Separation,
     /// The time of first contact over the span, by conservative advancement (convex pairs).
     FirstContact,
@@ -331,10 +332,16 @@ impl Effect {
         }
     }
 
-    /// Whether this build of the runner computes the effect (`separation` arrives with its
-    /// algorithm).
+    /// Whether this build of the runner computes the effect (all of them since `separation` arrived;
+    /// kept so that a future effect can be parsed before its algorithm lands).
     #[must_use]
     pub fn is_available(self) -> bool {
+        true
+    }
+
+    /// Whether the effect needs two convex bodies (every effect but `separation`).
+    #[must_use]
+    pub fn needs_convex(self) -> bool {
         !matches!(self, Effect::Separation)
     }
 
@@ -375,7 +382,7 @@ impl EffectSet {
     }
 
     /// Whether the set has an effect computed per frame (`distance`, `closest_points`,
-    /// `vertex_distance`, `hausdorff`, `cmmr`).
+    /// `vertex_distance`, `hausdorff`, `cmmr`, `separation`).
     #[must_use]
     pub fn has_per_frame(self) -> bool {
         [
@@ -384,6 +391,7 @@ impl EffectSet {
             Effect::VertexDistance,
             Effect::Hausdorff,
             Effect::Cmmr,
+            Effect::Separation,
         ]
         .into_iter()
         .any(|e| self.contains(e))

@@ -1,12 +1,13 @@
 //! An SVG picture of a run (`polydist run --svg FILE`), written with our own code.
 //!
 //! The scene panel draws every body at one frame — the frame of the smallest distance any pair
-//! reached (the first frame when no distance was asked) — with the closest-point segments and the
-//! Hausdorff witnesses (each directed distance's realizing vertex and its projection) of that frame.
+//! reached (the first frame when no distance was asked) — with the closest-point segments, the
+//! separation segments of simple bodies and the Hausdorff witnesses (each directed distance's
+//! realizing vertex and its projection) of that frame.
 //! Moving bodies also get their trajectory (the body frame's origin at every frame) and a dashed
 //! outline at the last frame. A scene with more than one frame gets a second panel: each pair's
 //! distance over time. Every element has a `class` (`body`, `ghost`, `trajectory`, `closest`,
-//! `hausdorff`, `distance-plot`, ...) so the picture can be styled or checked.
+//! `separation`, `hausdorff`, `distance-plot`, ...) so the picture can be styled or checked.
 
 use core::fmt::Write as _;
 
@@ -256,6 +257,25 @@ pub fn render_svg(scene: &Scene, report: &Report) -> String {
                 esc(&p.b),
                 f.distance
                     .map_or_else(|| "-".to_owned(), |d| format!("{d}"))
+            );
+        }
+        if let Some(r) = f.separation {
+            let (a, b) = (
+                view.map(DVec2::from_array(r.point_a)),
+                view.map(DVec2::from_array(r.point_b)),
+            );
+            let _ = writeln!(
+                s,
+                r#"<line class="separation" data-pair="{} {}" x1="{}" y1="{}" x2="{}" y2="{}" stroke="darkgreen" stroke-width="1.5"><title>{} – {}: separation {}</title></line>"#,
+                esc(&p.a),
+                esc(&p.b),
+                num(a.x),
+                num(a.y),
+                num(b.x),
+                num(b.y),
+                esc(&p.a),
+                esc(&p.b),
+                r.distance
             );
         }
         if let Some(h) = f.hausdorff.as_deref() {

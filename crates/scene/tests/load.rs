@@ -155,17 +155,17 @@ fn every_problem_is_reported() {
     assert!(has(
         &|e| matches!(e, SceneError::SelfPair { id, .. } if id == "k")
     ));
-    // `hausdorff` and `cmmr` are available: only `separation` is refused.
+    // Every effect is available now; `separation` takes simple bodies, the others do not.
     assert!(!has(&|e| matches!(
         e,
-        SceneError::EffectNotYetAvailable {
-            effect: "hausdorff" | "cmmr",
+        SceneError::EffectNotYetAvailable { .. }
+    )));
+    assert!(!has(&|e| matches!(
+        e,
+        SceneError::NeedsConvex {
+            effect: "separation",
             ..
         }
-    )));
-    assert!(has(&|e| matches!(
-        e,
-        SceneError::EffectNotYetAvailable { query, effect: "separation" } if query == "sep"
     )));
     assert!(has(&|e| matches!(
         e,
@@ -173,10 +173,10 @@ fn every_problem_is_reported() {
     )));
     assert!(has(&|e| matches!(e, SceneError::BadParameter { .. })));
     assert!(has(&|e| matches!(e, SceneError::NoEffects { .. })));
-    // The message of a not-yet-available effect names the query and says what to do.
-    let msg = text.iter().find(|t| t.contains("`separation`")).unwrap();
+    // The message of a convex-only effect on a simple body names the query and says what to do.
+    let msg = text.iter().find(|t| t.contains("`first_contact`")).unwrap();
     assert!(
-        msg.contains("sep") && msg.contains("not yet available"),
+        msg.contains("sep") && msg.contains("ask `separation`"),
         "{msg}"
     );
     // The whole list renders with a count.
