@@ -438,8 +438,19 @@ fn default_scene_json_against_independent_answers() {
     assert_eq!(r["version"], 1);
     assert_eq!(r["scene"], "default");
     assert_eq!(r["failed"], false);
-    assert_eq!(r["pairs"].as_array().unwrap().len(), 4);
+    assert_eq!(r["pairs"].as_array().unwrap().len(), 5);
     let bodies = read_bodies(&fixtures().join("scenes/default.toml"));
+    // The robot over the U-shaped dock (a simple polygon): the separation by brute force.
+    let (robot, dock) = (body(&bodies, "robot"), body(&bodies, "dock"));
+    for f in pair(&r, "robot", "dock")["frames"].as_array().unwrap() {
+        let t = f["t"].as_f64().unwrap();
+        let expect = ring_distance(&robot.at(t), &dock.at(t));
+        let d = f["separation"]["distance"].as_f64().unwrap();
+        assert!(
+            close(d, expect, 1e-12),
+            "robot – dock at {t}: {d} vs {expect}"
+        );
+    }
 
     // The robot (hexagon of radius 1/2 about (−4 + t, 0), angle t/2) reaches the wall's face x = 1.5
     // when −4 + t + max_k cos(t/2 + kπ/3)/2 = 1.5: increasing in t (slope ≥ 1 − 1/4), bisected here.
