@@ -119,35 +119,52 @@ fn outer_edge<K: Kernel>(v: &[DVec2], i: usize, x: DVec2) -> Option<(DVec2, DVec
 /// when `w = q* − p* ≠ 0`, `w ∈ N_P(p*)` and `−w ∈ N_Q(q*)`; then the lines through `p*` and `q*`
 /// perpendicular to `w` separate the polygons, so they are disjoint at distance `|w|`.
 pub(crate) fn certify<K: Kernel>(p: &[DVec2], q: &[DVec2], pair: Pair) -> bool {
-    use Sign::{Negative, Positive};
+    certify_parallel::<K>(p, q, pair).is_some()
+}
+
+/// [`certify`], returning for a certified pair whether it is `parallel` (both support faces are
+/// edges) from the same signs: the same predicates in the same order as [`certify`], and `parallel`
+/// equals what [`finish`] computes (a zero among the signs that certify the normal cones).
+pub(crate) fn certify_parallel<K: Kernel>(p: &[DVec2], q: &[DVec2], pair: Pair) -> Option<bool> {
+    use Sign::{Negative, Positive, Zero};
+    let holds = |ok: bool| if ok { Some(()) } else { None };
     match pair {
         Pair::Vv(i, j) => {
             let (x, y) = (at(p, i), at(q, j));
-            x != y
-                && K::dot_sign(prev(p, i), x, x, y) != Negative
-                && K::dot_sign(x, at(p, i + 1), x, y) != Positive
-                && K::dot_sign(prev(q, j), y, x, y) != Positive
-                && K::dot_sign(y, at(q, j + 1), x, y) != Negative
+            holds(x != y)?;
+            let s1 = K::dot_sign(prev(p, i), x, x, y);
+            holds(s1 != Negative)?;
+            let s2 = K::dot_sign(x, at(p, i + 1), x, y);
+            holds(s2 != Positive)?;
+            let s3 = K::dot_sign(prev(q, j), y, x, y);
+            holds(s3 != Positive)?;
+            let s4 = K::dot_sign(y, at(q, j + 1), x, y);
+            holds(s4 != Negative)?;
+            let face_p = p.len() >= 2 && (s1 == Zero || s2 == Zero);
+            let face_q = q.len() >= 2 && (s3 == Zero || s4 == Zero);
+            Some(face_p && face_q)
         }
         Pair::Ve(i, j) => {
             let x = at(p, i);
-            let Some((a, b)) = outer_edge::<K>(q, j, x) else {
-                return false;
-            };
+            let (a, b) = outer_edge::<K>(q, j, x)?;
             // w ∝ rot90(b − a): (p_i − p_{i−1})·w ≥ 0 ⇔ (b − a) × (p_i − p_{i−1}) ≥ 0.
-            clamp::<K>(x, a, b).is_none()
-                && K::cross_sign(a, b, prev(p, i), x) != Negative
-                && K::cross_sign(a, b, x, at(p, i + 1)) != Positive
+            holds(clamp::<K>(x, a, b).is_none())?;
+            let s1 = K::cross_sign(a, b, prev(p, i), x);
+            holds(s1 != Negative)?;
+            let s2 = K::cross_sign(a, b, x, at(p, i + 1));
+            holds(s2 != Positive)?;
+            Some(p.len() >= 2 && (s1 == Zero || s2 == Zero))
         }
         Pair::Ev(i, j) => {
             let y = at(q, j);
-            let Some((a, b)) = outer_edge::<K>(p, i, y) else {
-                return false;
-            };
+            let (a, b) = outer_edge::<K>(p, i, y)?;
             // −w ∝ rot90(b − a) for the outward normal w of P's edge.
-            clamp::<K>(y, a, b).is_none()
-                && K::cross_sign(a, b, prev(q, j), y) != Negative
-                && K::cross_sign(a, b, y, at(q, j + 1)) != Positive
+            holds(clamp::<K>(y, a, b).is_none())?;
+            let s1 = K::cross_sign(a, b, prev(q, j), y);
+            holds(s1 != Negative)?;
+            let s2 = K::cross_sign(a, b, y, at(q, j + 1));
+            holds(s2 != Positive)?;
+            Some(q.len() >= 2 && (s1 == Zero || s2 == Zero))
         }
     }
 }
@@ -207,8 +224,18 @@ pub(crate) fn caller_on_edge<K: Kernel>(poly: &ConvexPolygon, e: usize, x: DVec2
 
 /// The finished [`Closest`] of a canonical pair (certified by the caller of this function).
 pub(crate) fn finish<K: Kernel>(pp: &ConvexPolygon, qq: &ConvexPolygon, pair: Pair) -> Closest {
+    let parallel = parallel::<K>(pp.vertices(), qq.vertices(), pair);
+    finish_with::<K>(pp, qq, pair, parallel)
+}
+
+/// [`finish`] with `parallel` already known (from [`certify_parallel`]).
+pub(crate) fn finish_with<K: Kernel>(
+    pp: &ConvexPolygon,
+    qq: &ConvexPolygon,
+    pair: Pair,
+    parallel: bool,
+) -> Closest {
     let (p, q) = (pp.vertices(), qq.vertices());
-    let parallel = parallel::<K>(p, q, pair);
     // `b.vertex` is on `P` unless the pair is edge–vertex.
     let (b, vertex_on_p, feature_p, feature_q) = match pair {
         Pair::Vv(i, j) => (
