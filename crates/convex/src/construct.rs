@@ -14,6 +14,13 @@
 //!   0.625 of a gap of the result (at most three steps; else `g = fl(N_k)/fl(L)` and one exactly
 //!   evaluated residual, within `0.5 + O(2⁻⁵⁰)` ulp). Under 1 ulp per coordinate either way.
 //!
+//! These are the budgets of the second stage. The first, lean stage (`vertex_vertex_lean`,
+//! `vertex_edge_lean`, at the end of this file) evaluates the same quantities with error-free
+//! transformations in a fixed order under a hand-derived a-priori bound, and answers only when that bound
+//! certifies its result: the same correctly rounded value for vertex–vertex; for vertex–edge the squared
+//! distance and the foot within 0.625 ulp and the distance within 1.2 ulps (tighter than the budgets
+//! above). It refuses near-total cancellation and extreme ranges, which go to the second stage.
+//!
 //! If `c²` overflows (coordinates near `2^500`), the fallback `s = (c/L)·c`, `d = |c|/√L` costs at
 //! most 5u and 3.5u instead; subnormal intermediates void the bounds (not met in practice: they need
 //! distances below `2^-500`).
