@@ -14,7 +14,7 @@
 use glam::DVec2;
 use polydist_polygon::predicates::Kernel;
 
-use crate::pair::{Pair, canonical, certify_parallel};
+use crate::pair::{Pair, canonical_certified};
 
 /// Below this total `n + m` of vertex counts (two polygons with area), [`distance_with`](crate::distance_with)
 /// tries the linear walk when the support guess failed, before the search. The walk costs about 110
@@ -228,9 +228,8 @@ pub(crate) fn certified_support<K: Kernel>(p: &[DVec2], q: &[DVec2]) -> Option<(
         }
         (i, j, best) = (i2, j2, next);
     }
-    let pair = canonical::<K>(p, q, best.1);
-    if let Some(parallel) = certify_parallel::<K>(p, q, pair) {
-        return Some((pair, parallel));
+    if let Some(found) = canonical_certified::<K>(p, q, best.1) {
+        return Some(found);
     }
     for _ in 0..DESCENT {
         let start = (i, j);
@@ -249,8 +248,7 @@ pub(crate) fn certified_support<K: Kernel>(p: &[DVec2], q: &[DVec2]) -> Option<(
             break;
         }
     }
-    let pair = canonical::<K>(p, q, best.1);
-    certify_parallel::<K>(p, q, pair).map(|parallel| (pair, parallel))
+    canonical_certified::<K>(p, q, best.1)
 }
 
 /// The certified canonical closest pair of two polygons with area found by the walk, or `None`
@@ -298,6 +296,5 @@ pub(crate) fn certified_walk<K: Kernel>(p: &[DVec2], q: &[DVec2]) -> Option<(Pai
             };
         }
     }
-    let pair = canonical::<K>(p, q, best.1);
-    certify_parallel::<K>(p, q, pair).map(|parallel| (pair, parallel))
+    canonical_certified::<K>(p, q, best.1)
 }

@@ -170,6 +170,56 @@ pub(crate) fn certify_parallel<K: Kernel>(p: &[DVec2], q: &[DVec2], pair: Pair) 
     }
 }
 
+/// `canonical` then [`certify_parallel`], sharing the foot test: for a vertex–edge pair of a polygon
+/// (at least three vertices) whose foot `canonical` found strictly inside the edge, the certificate's
+/// own foot test (the same two dot signs on the same edge) is not repeated. The same answer as the two
+/// calls.
+pub(crate) fn canonical_certified<K: Kernel>(
+    p: &[DVec2],
+    q: &[DVec2],
+    pair: Pair,
+) -> Option<(Pair, bool)> {
+    use Sign::{Negative, Positive, Zero};
+    // Vertex x against edge ab of a ring with at least three vertices, foot strictly inside: x must be
+    // strictly right of ab (then ab is the edge `outer_edge` returns), then the two cross signs.
+    let inside = |x: DVec2, a: DVec2, b: DVec2, before: DVec2, after: DVec2, other_len: usize| {
+        if K::orient(a, b, x) != Orientation::Clockwise {
+            return None;
+        }
+        let s1 = K::cross_sign(a, b, before, x);
+        if s1 == Negative {
+            return None;
+        }
+        let s2 = K::cross_sign(a, b, x, after);
+        if s2 == Positive {
+            return None;
+        }
+        Some(other_len >= 2 && (s1 == Zero || s2 == Zero))
+    };
+    let done = |c: Pair| certify_parallel::<K>(p, q, c).map(|parallel| (c, parallel));
+    match pair {
+        Pair::Vv(..) => done(pair),
+        Pair::Ve(i, j) => {
+            let (x, a, b) = (at(p, i), at(q, j), at(q, j + 1));
+            match clamp::<K>(x, a, b) {
+                Some(false) => done(Pair::Vv(i, wrap(j, q.len()))),
+                Some(true) => done(Pair::Vv(i, wrap(j + 1, q.len()))),
+                None if q.len() < 3 => done(pair),
+                None => inside(x, a, b, prev(p, i), at(p, i + 1), p.len()).map(|par| (pair, par)),
+            }
+        }
+        Pair::Ev(i, j) => {
+            let (y, a, b) = (at(q, j), at(p, i), at(p, i + 1));
+            match clamp::<K>(y, a, b) {
+                Some(false) => done(Pair::Vv(wrap(i, p.len()), j)),
+                Some(true) => done(Pair::Vv(wrap(i + 1, p.len()), j)),
+                None if p.len() < 3 => done(pair),
+                None => inside(y, a, b, prev(q, j), at(q, j + 1), q.len()).map(|par| (pair, par)),
+            }
+        }
+    }
+}
+
 /// Whether both support faces are edges (parallel facing edges), for a certified canonical pair.
 fn parallel<K: Kernel>(p: &[DVec2], q: &[DVec2], pair: Pair) -> bool {
     let zero = Sign::Zero;
@@ -280,5 +330,54 @@ pub(crate) fn finish_with<K: Kernel>(
         feature_p,
         feature_q,
         parallel,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use polydist_oracle::{SplitMix64, random_convex, random_convex_lattice};
+    use polydist_polygon::predicates::{Exact, Robust};
+
+    use super::*;
+
+    /// `canonical_certified` is `canonical` then `certify_parallel`, for every vertex–vertex and
+    /// vertex–edge pair of small lattice polygons (collinear and parallel edges, shared vertices,
+    /// meeting polygons) and of random ones, both argument orders, under Robust and Exact.
+    #[test]
+    fn canonical_certified_is_canonical_then_certify() {
+        fn check<K: Kernel>(p: &[DVec2], q: &[DVec2]) {
+            for i in 0..p.len() {
+                for j in 0..q.len() {
+                    for pair in [Pair::Vv(i, j), Pair::Ve(i, j), Pair::Ev(i, j)] {
+                        let c = canonical::<K>(p, q, pair);
+                        let expected = certify_parallel::<K>(p, q, c).map(|par| (c, par));
+                        assert_eq!(canonical_certified::<K>(p, q, pair), expected, "{pair:?}");
+                    }
+                }
+            }
+        }
+        let mut rng = SplitMix64::new(3);
+        for round in 0..300 {
+            let (n, m) = (3 + round % 6, 3 + (round / 6) % 6);
+            let (p, q) = if round % 3 == 0 {
+                let shift = DVec2::new(2.0 + (round % 4) as f64, (round % 5) as f64 - 2.0);
+                let p = random_convex(&mut rng, n, DVec2::ZERO, 1.0);
+                (p, random_convex(&mut rng, m, shift, 1.0))
+            } else {
+                let p = random_convex_lattice(&mut rng, n, 4);
+                let q: Vec<DVec2> = random_convex_lattice(&mut rng, m, 4)
+                    .into_iter()
+                    .map(|v| v + DVec2::new((round % 9) as f64, 0.0))
+                    .collect();
+                (p, q)
+            };
+            let (Ok(pp), Ok(qq)) = (ConvexPolygon::try_new(&p), ConvexPolygon::try_new(&q)) else {
+                continue;
+            };
+            let (p, q) = (pp.vertices(), qq.vertices());
+            check::<Robust>(p, q);
+            check::<Robust>(q, p);
+            check::<Exact>(p, q);
+        }
     }
 }
