@@ -6,7 +6,7 @@
 //!
 //! Series, per `n` in 8 … 262,144:
 //! - `polydist_{fast,robust,exact}`: `distance_with::<K>` (the scan below `SCAN_BELOW`, the certified
-//!   support guess and linear walk below `n + m = 64`, else the search);
+//!   support guess below `n + m = 512` and the linear walk below `n + m = 64`, else the search);
 //! - `yang_{fast,robust,exact}`: `distance_yang_with::<K>` (Yang's search at every size);
 //! - `schwartz_{fast,robust,exact}`: `distance_schwartz_with::<K>` (Schwartz's `O(log² N)` search);
 //! - `brute_robust`: `distance_brute::<Robust>` (`Θ(nm)`, up to `n = 512`);
@@ -21,6 +21,8 @@
 //! answers another question (or a pair that is not disjoint) stops the run.
 //!
 //! Run: `cargo bench -p polydist-benches --bench convex`. Figures only; nothing else is asserted.
+//! Instruction counts of single queries (exact, unlike timings on a shared machine): the example
+//! `convex_callgrind` under `valgrind --tool=callgrind` (see its doc).
 
 use std::hint::black_box;
 use std::time::Duration;

@@ -13,9 +13,9 @@ use polydist_polygon::predicates::Kernel;
 use polydist_polygon::{ConvexPolygon, Feature};
 
 use crate::brute::brute_pair;
-use crate::linear::{LINEAR_BELOW, certified_support, certified_walk};
+use crate::linear::{LINEAR_BELOW, SUPPORT_BELOW, certified_support, certified_walk};
 use crate::meet::{Contact, classify, separation};
-use crate::pair::{Pair, canonical, certify, finish, nearer};
+use crate::pair::{Pair, canonical, certify, finish, finish_with, nearer};
 use crate::result::{Closest, Separation, bump};
 use crate::yang::{SCAN_BELOW, solve_yang};
 
@@ -94,23 +94,29 @@ impl Solved {
 }
 
 /// [`distance_with`](crate::distance_with)'s code, also returning the pair: the scan below
-/// [`SCAN_BELOW`]; for two polygons with `n + m <` `LINEAR_BELOW`, the certified pair of the support
-/// guess or else of the linear walk, when it is not `parallel`; else `solve_yang`, shared with `distance_yang_with` (candidate,
-/// certificate, reseeds, contact test, Schwartz, brute force, with the same statistics).
+/// [`SCAN_BELOW`]; for two polygons with `n + m <` `SUPPORT_BELOW`, the certified pair of the support
+/// guess or else (`n + m <` `LINEAR_BELOW`) of the linear walk, when it is not `parallel`; else
+/// `solve_yang`, shared with `distance_yang_with` (candidate, certificate, reseeds, contact test,
+/// Schwartz, brute force, with the same statistics).
 pub(crate) fn solve<K: Kernel>(pp: &ConvexPolygon, qq: &ConvexPolygon) -> Solved {
     let (n, m) = (pp.len(), qq.len());
     if n * m < SCAN_BELOW {
         let meet = classify::<K>(pp, qq, false);
         return Solved::from_meet::<K>(pp, qq, meet, || brute_pair::<K>(pp, qq));
     }
-    if n >= 3 && m >= 3 && n + m < LINEAR_BELOW {
+    if n >= 3 && m >= 3 && n + m < SUPPORT_BELOW {
         let (p, q) = (pp.vertices(), qq.vertices());
-        if let Some(pair) = certified_support::<K>(p, q).or_else(|| certified_walk::<K>(p, q)) {
-            let closest = finish::<K>(pp, qq, pair);
-            if !closest.parallel {
-                bump(|s| s.linear_walks += 1);
-                return Solved::Disjoint(closest, pair);
+        let walk = || {
+            if n + m < LINEAR_BELOW {
+                certified_walk::<K>(p, q)
+            } else {
+                None
             }
+        };
+        // A `parallel` pair is left to the search (which decides which optimal pair to report).
+        if let Some((pair, false)) = certified_support::<K>(p, q).or_else(walk) {
+            bump(|s| s.linear_walks += 1);
+            return Solved::Disjoint(finish_with::<K>(pp, qq, pair, false), pair);
         }
     }
     solve_yang::<K>(pp, qq)

@@ -1,28 +1,36 @@
-//! The small-input path: a support guess (two steps of GJK's support mapping), else a linear walk
-//! around `Z = P ⊖ Q`, both in plain `f64`, proposes a candidate pair, and the exact Theorem-1
+//! The small-input path: a support guess (sampled supports, GJK's support mapping kept while it
+//! helps, a local descent) for `n + m <` [`SUPPORT_BELOW`], else a linear walk around `Z = P ⊖ Q` for
+//! `n + m <` [`LINEAR_BELOW`], both in plain `f64`, proposes a candidate pair, and the exact Theorem-1
 //! certificate decides whether it is the answer.
 //!
-//! Nothing here decides anything: the walk only chooses which pair to certify. Its arithmetic is
-//! rounded and may pick a wrong pair on near-degenerate input; then the certificate (exact predicates)
-//! fails and the caller runs the `O(log)` search. A certified pair that is not `parallel` is the unique
-//! optimal canonical pair, so the answer is the one the search would give; a `parallel` pair is left to
-//! the search, which decides which of the optimal pairs to report (so the output never depends on the
-//! path taken).
+//! Nothing here decides anything: the guess and the walk only choose which pair to certify. Their
+//! arithmetic is rounded and may pick a wrong pair on near-degenerate input; then the certificate
+//! (exact predicates) fails and the caller runs the `O(log)` search. A certified pair that is not
+//! `parallel` is the unique optimal canonical pair, so the answer is the one the search would give; a
+//! `parallel` pair is left to the search, which decides which of the optimal pairs to report (so the
+//! output never depends on the path taken). Every loop is bounded by a constant or by the ring's
+//! length, whatever the arithmetic does.
 
 use glam::DVec2;
 use polydist_polygon::predicates::Kernel;
 
-use crate::pair::{Pair, canonical, certify};
+use crate::pair::{Pair, canonical_certified};
 
 /// Below this total `n + m` of vertex counts (two polygons with area), [`distance_with`](crate::distance_with)
-/// tries the support guess and then the linear walk before the search. Measured by instruction counts
-/// per Robust query (callgrind, the benchmark's random separated pairs along a random direction and
-/// along `+x`): the support guess answers in 1,620 (`+x`) and 2,822 (random) instructions at
-/// `n = m = 8`, where the search costs 8,665 unguided and about 5,900 guided; at `n = m = 32`, 4,096 and
-/// 2,868 against 7,363 and 5,875. At 64 the guess misses often and a miss costs more than the search
-/// saves (13,006 against 9,155 along `+x`); the walk alone costs about 110 instructions per step. So the
-/// cut is `n + m = 64`.
+/// tries the linear walk when the support guess failed, before the search. The walk costs about 110
+/// instructions per step and the support guess now answers every benchmark pair (1000 random pairs
+/// per size, both workloads), so the walk only backs the guess up on small inputs; the cut is kept at
+/// `n + m = 64`.
 pub(crate) const LINEAR_BELOW: usize = 64;
+
+/// Below this total `n + m` of vertex counts (two polygons with area), [`distance_with`](crate::distance_with)
+/// tries the support guess ([`certified_support`]) before anything else. Measured (the benchmark's pair
+/// generator, 1000 pairs per size and workload): it answers 100 % of the pairs at `n = m = 8 … 128`,
+/// 92–97 % at `n = m = 512`, where a miss costs the guess plus the search (callgrind, `+x`, `n = 512`:
+/// 24,875 instructions with the guess against 10,684 for the search alone); instructions per Robust
+/// query with the guess at `n = m = 64`: 1,962 (`+x`) and 1,677 (random direction) against 8,336 and
+/// 6,882 for the search. So the cut is `n + m = 512`.
+pub(crate) const SUPPORT_BELOW: usize = 512;
 
 /// A pseudo-angle of the direction `d` in `[0, 4)`, increasing with the angle from `+x` (counter-
 /// clockwise); `f64`, only for ordering heuristically.
@@ -80,38 +88,82 @@ fn succ(k: usize, len: usize) -> usize {
     if k + 1 == len { 0 } else { k + 1 }
 }
 
-/// The vertex of `v` maximizing `x·d` (`f64`, first on ties): a support point.
-#[inline]
-fn support(v: &[DVec2], d: DVec2) -> usize {
-    let mut best = (f64::NEG_INFINITY, 0);
-    for (i, x) in v.iter().enumerate() {
-        let h = x.dot(d);
-        if h > best.0 {
-            best = (h, i);
-        }
-    }
-    best.1
+/// How many evenly spaced vertices [`support_from_samples`] looks at before climbing.
+const SAMPLES: usize = 8;
+/// At most this many refinements of the support pair in [`certified_support`].
+const REFINEMENTS: usize = 4;
+/// At most this many local-descent moves in [`certified_support`].
+const DESCENT: usize = 16;
+
+/// `k − 1` on a ring of `len` indices.
+#[inline(always)]
+fn pred(k: usize, len: usize) -> usize {
+    if k == 0 { len - 1 } else { k - 1 }
 }
 
-/// The cheapest guess, tried before the walk: support points of `P` and `Q` along the direction between
-/// the vertex centroids, refined once along the direction between those supports (two steps of GJK's
-/// support mapping), then the nearest (in `f64`) of the five vertex–vertex and vertex–edge pairs at the
-/// two support vertices, canonicalised and certified under `K`. `O(n + m)` arithmetic with a small
-/// constant; `None` when the certificate fails.
-pub(crate) fn certified_support<K: Kernel>(p: &[DVec2], q: &[DVec2]) -> Option<Pair> {
-    let (n, m) = (p.len(), q.len());
-    let centroid = |v: &[DVec2]| v.iter().copied().sum::<DVec2>() / v.len() as f64;
-    let mut d = centroid(q) - centroid(p);
-    let (mut i, mut j) = (0, 0);
-    for _ in 0..2 {
-        i = support(p, d);
-        j = support(q, -d);
-        d = q[j] - p[i];
+/// A vertex of the convex ring `v` maximizing `x·d`, found by climbing from `start`: along the ring
+/// while the next vertex is strictly higher (`f64`; the heights along a convex ring are unimodal, so
+/// the climb ends at the top or, on rounded ties, next to it). At most `len` steps.
+#[inline]
+fn climb(v: &[DVec2], d: DVec2, start: usize) -> usize {
+    let len = v.len();
+    let (mut k, mut h) = (start, v[start].dot(d));
+    let forward = v[succ(k, len)].dot(d);
+    if forward > h {
+        (k, h) = (succ(k, len), forward);
+        for _ in 0..len {
+            let next = succ(k, len);
+            let hn = v[next].dot(d);
+            if hn <= h {
+                break;
+            }
+            (k, h) = (next, hn);
+        }
+    } else {
+        for _ in 0..len {
+            let next = pred(k, len);
+            let hn = v[next].dot(d);
+            if hn <= h {
+                break;
+            }
+            (k, h) = (next, hn);
+        }
     }
-    let (ip, jp) = ((i + n - 1) % n, (j + m - 1) % m);
+    k
+}
+
+/// A support vertex of `v` along `d`: the highest of at most [`SAMPLES`] evenly spaced vertices (all
+/// of them for small rings), then [`climb`]. `O(SAMPLES + len/SAMPLES)` dot products.
+#[inline]
+fn support_from_samples(v: &[DVec2], d: DVec2) -> usize {
+    let len = v.len();
+    let stride = len.div_ceil(SAMPLES);
+    let (mut best, mut top) = (0, v[0].dot(d));
+    let mut k = stride;
+    while k < len {
+        let h = v[k].dot(d);
+        if h > top {
+            (best, top) = (k, h);
+        }
+        k += stride;
+    }
+    if stride == 1 { best } else { climb(v, d, best) }
+}
+
+/// The mean of at most four evenly spaced vertices: a point inside the polygon.
+#[inline]
+fn inner_point(v: &[DVec2]) -> DVec2 {
+    let len = v.len();
+    (v[0] + v[len / 4] + v[len / 2] + v[3 * len / 4]) * 0.25
+}
+
+/// The nearest in `f64` of the five vertex–vertex and vertex–edge pairs at the vertices `p_i`, `q_j`,
+/// with its squared distance.
+fn nearest_of_five(p: &[DVec2], q: &[DVec2], i: usize, j: usize) -> (f64, Pair) {
+    let (n, m) = (p.len(), q.len());
+    let (ip, jp) = (pred(i, n), pred(j, m));
     let z = p[i] - q[j];
     let candidates = [
-        (z.length_squared(), Pair::Vv(i, j)),
         (dist2_to_segment(z, q[j] - q[succ(j, m)]), Pair::Ve(i, j)),
         (
             dist2_to_segment(p[i] - q[jp], q[jp] - q[j]),
@@ -123,14 +175,80 @@ pub(crate) fn certified_support<K: Kernel>(p: &[DVec2], q: &[DVec2]) -> Option<P
             Pair::Ev(ip, j),
         ),
     ];
-    let mut best = candidates[0];
-    for c in &candidates[1..] {
+    let mut best = (z.length_squared(), Pair::Vv(i, j));
+    for c in candidates {
         if c.0 < best.0 {
-            best = *c;
+            best = c;
         }
     }
-    let pair = canonical::<K>(p, q, best.1);
-    certify::<K>(p, q, pair).then_some(pair)
+    best
+}
+
+/// The nearest point of the segment `[a, b]` to `x` (`f64`).
+#[inline]
+fn nearest_on_segment(x: DVec2, a: DVec2, b: DVec2) -> DVec2 {
+    let e = b - a;
+    let t = ((x - a).dot(e) / e.length_squared()).clamp(0.0, 1.0);
+    if t.is_finite() { a + t * e } else { a }
+}
+
+/// The direction from `P` to `Q` that the pair suggests, as GJK takes it: the vector between the pair's
+/// nearest points (`f64`; the edge's normal when the foot is inside the edge).
+fn direction(p: &[DVec2], q: &[DVec2], pair: Pair) -> DVec2 {
+    match pair {
+        Pair::Vv(i, j) => q[j] - p[i],
+        Pair::Ve(i, j) => nearest_on_segment(p[i], q[j], q[succ(j, q.len())]) - p[i],
+        Pair::Ev(i, j) => q[j] - nearest_on_segment(q[j], p[i], p[succ(i, p.len())]),
+    }
+}
+
+/// The cheapest guess, tried before the walk: support vertices of `P` and `Q` along the direction
+/// between two inner points (the means of four vertices each), then steps of GJK's support mapping
+/// along the vector between the current nearest pair's nearest points while they bring the pair
+/// strictly nearer (at most [`REFINEMENTS`]; vertex supports alone can zigzag around the answer), then a
+/// local descent: move one of the two vertices to a ring neighbour while that is strictly nearer (at
+/// most [`DESCENT`] moves), only when the pair so far fails the certificate. The pair compared at two vertices is the nearest (in `f64`) of the five
+/// vertex–vertex and vertex–edge pairs there; the final one is canonicalised and certified under `K`.
+/// `O(SAMPLES + (n + m)/SAMPLES)` arithmetic when the supports move little; `None` when the
+/// certificate fails, else the pair and whether it is `parallel`.
+pub(crate) fn certified_support<K: Kernel>(p: &[DVec2], q: &[DVec2]) -> Option<(Pair, bool)> {
+    let (n, m) = (p.len(), q.len());
+    let d = inner_point(q) - inner_point(p);
+    let (mut i, mut j) = (support_from_samples(p, d), support_from_samples(q, -d));
+    let mut best = nearest_of_five(p, q, i, j);
+    for _ in 0..REFINEMENTS {
+        let d = direction(p, q, best.1);
+        let (i2, j2) = (climb(p, d, i), climb(q, -d, j));
+        if (i2, j2) == (i, j) {
+            break;
+        }
+        let next = nearest_of_five(p, q, i2, j2);
+        if next.0 >= best.0 {
+            break;
+        }
+        (i, j, best) = (i2, j2, next);
+    }
+    if let Some(found) = canonical_certified::<K>(p, q, best.1) {
+        return Some(found);
+    }
+    for _ in 0..DESCENT {
+        let start = (i, j);
+        for (a, b) in [
+            (succ(i, n), j),
+            (pred(i, n), j),
+            (i, succ(j, m)),
+            (i, pred(j, m)),
+        ] {
+            let next = nearest_of_five(p, q, a, b);
+            if next.0 < best.0 {
+                (i, j, best) = (a, b, next);
+            }
+        }
+        if (i, j) == start {
+            break;
+        }
+    }
+    canonical_certified::<K>(p, q, best.1)
 }
 
 /// The certified canonical closest pair of two polygons with area found by the walk, or `None`
@@ -139,7 +257,7 @@ pub(crate) fn certified_support<K: Kernel>(p: &[DVec2], q: &[DVec2]) -> Option<P
 /// The walk merges the edges of `P` (from its lowest vertex) and of `−Q` (from `Q`'s highest) by
 /// pseudo-angle: `n + m` steps, each side `p_i − q_j + [0, 1]·edge` of `Z` measured in `f64`, the
 /// nearest to the origin proposed as the pair. `O(n + m)` arithmetic, then `O(1)` exact predicates.
-pub(crate) fn certified_walk<K: Kernel>(p: &[DVec2], q: &[DVec2]) -> Option<Pair> {
+pub(crate) fn certified_walk<K: Kernel>(p: &[DVec2], q: &[DVec2]) -> Option<(Pair, bool)> {
     let (n, m) = (p.len(), q.len());
     let (mut i, mut j) = (lowest(p, false), lowest(q, true));
     let (mut i1, mut j1) = (succ(i, n), succ(j, m));
@@ -178,6 +296,5 @@ pub(crate) fn certified_walk<K: Kernel>(p: &[DVec2], q: &[DVec2]) -> Option<Pair
             };
         }
     }
-    let pair = canonical::<K>(p, q, best.1);
-    certify::<K>(p, q, pair).then_some(pair)
+    canonical_certified::<K>(p, q, best.1)
 }

@@ -9,6 +9,7 @@ use polydist_polygon::predicates::{Kernel, Polynomial, Ring, Sign, is_valid_coor
 
 use crate::extreme::{Nearest, extreme, extreme_left_of, nearest_feature};
 use crate::hint::{Solved, solve};
+use crate::linear::SUPPORT_BELOW;
 use crate::pair::{Pair, at};
 use crate::result::{Separation, bump};
 use crate::yang::SCAN_BELOW;
@@ -134,7 +135,8 @@ fn pair_within<K: Kernel>(p: &[DVec2], q: &[DVec2], pair: Pair, r: f64) -> bool 
 /// `r` gives [`Within::Beyond`] with `lower_bound = 0` (or more); `r = +∞` gives [`Within::Inside`].
 /// `r` beyond the predicates' coordinate range (`2^500`) is compared with exact rationals.
 ///
-/// **Early exit.** For two polygons (`n, m ≥ 3`, above the scan size) the call first takes Yang's seed
+/// **Early exit.** For two polygons (`n, m ≥ 3`, `n + m ≥ 512`: below that the full query's certified
+/// support guess costs fewer predicates than this check) the call first takes Yang's seed
 /// pair (steps 1–2 of the search: `Q`'s nearest feature to a vertex of `P`, then `P`'s nearest feature
 /// to that), whose perpendicular line supports `P`, and finds `Q`'s vertex nearest that line (one
 /// extreme search). If all of `Q` lies more than `r` beyond it (one exact sign of degree 4), the answer
@@ -171,6 +173,7 @@ pub fn distance_within<K: Kernel>(p: &ConvexPolygon, q: &ConvexPolygon, r: f64) 
     if pv.len() >= 3
         && qv.len() >= 3
         && pv.len() * qv.len() >= SCAN_BELOW
+        && pv.len() + qv.len() >= SUPPORT_BELOW
         && is_valid_coordinate(r)
         && beyond_early::<K>(pv, qv, r)
     {

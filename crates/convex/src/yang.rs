@@ -417,10 +417,11 @@ pub(crate) fn solve_yang<K: Kernel>(pp: &ConvexPolygon, qq: &ConvexPolygon) -> S
 /// or how they meet, deciding everything with the kernel `K`.
 ///
 /// Tiny inputs (`n·m <` [`SCAN_BELOW`]) are scanned ([`distance_brute`](crate::distance_brute)). Two
-/// small polygons (`n + m < 64`) first try a linear walk around the implicit Minkowski difference in
-/// plain `f64` whose candidate pair must pass the exact Theorem-1 certificate (the walk decides
-/// nothing; a `parallel` pair is left to the search, so the answer never depends on the path). All
-/// other inputs use [`distance_yang_with`]. The answer is the same whichever path produced it. Under the Robust and Exact kernels the reported features
+/// small polygons (`n + m < 512`) first try a support guess (sampled supports refined while the pair
+/// gets nearer, then a bounded local descent), and below `n + m < 64` a linear walk around the implicit
+/// Minkowski difference, both in plain `f64`; a candidate pair must pass the exact Theorem-1
+/// certificate (the guesses decide nothing; a `parallel` pair is left to the search, so the answer
+/// never depends on the path). All other inputs use [`distance_yang_with`]. The answer is the same whichever path produced it. Under the Robust and Exact kernels the reported features
 /// realize the distance exactly and the outcome is exact; the numbers obey the crate's error budget.
 /// Under [`Fast`](polydist_polygon::predicates::Fast) the features may be wrong on near-degenerate
 /// input, but the call terminates within the same bounds and never panics.

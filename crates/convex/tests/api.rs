@@ -79,7 +79,8 @@ fn within_stops_early_when_a_seed_line_separates() {
     reset_search_stats();
     let (mut early_cost, mut full_cost, mut cases) = (0u64, 0u64, 0u64);
     for round in 0..200 {
-        let (n, m) = (16 + rng.index(200), 16 + rng.index(60));
+        // n + m ≥ 512: below that the full query's support guess is cheaper and no early check runs.
+        let (n, m) = (450 + rng.index(200), 64 + rng.index(60));
         let (p, q) = disjoint_pair(&mut rng, n, m);
         let (pp, qq) = (poly(&p), poly(&q));
         let exact = convex_distance(&p, &q);
