@@ -9,7 +9,7 @@
 //! | [`predicates`] | `polydist-predicates` | exact predicates behind the `Fast`, `Robust` and `Exact` kernels |
 //! | [`polygon`] | `polydist-polygon` | validated `ConvexPolygon` and `SimplePolygon`, Melkman hull, point location |
 //! | [`convex`] | `polydist-convex` | convex–convex distance in O(log m + log n) with exact features and closest points |
-//! | [`separation`] | `polydist-separation` | chains separated by a line (Amato 1992, section 3): separation and closest visible vertices of monotone chains in O(n) with SMAWK |
+//! | [`separation`] | `polydist-separation` | separation of simple polygons (Amato 1992) when their hulls are disjoint, point/segment–polygon distances, and section 3 on its own (chains separated by a line, with SMAWK) |
 //!
 //! `polydist::polygon::ConvexPolygon` is the same item as `polydist_polygon::ConvexPolygon`. The row-minima
 //! search polydist uses (SMAWK) is its own crate, `monotone-minima`, with no dependency on anything of ours.

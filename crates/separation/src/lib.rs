@@ -1,5 +1,24 @@
-//! Separation of two polygonal chains separated by a line (Amato 1992, section 3), with exact
-//! predicates and SMAWK.
+//! Separation of simple polygons (Amato 1992): the distance between two boundaries with a realizing
+//! pair, decided with exact predicates and SMAWK.
+//!
+//! # Examples
+//! ```
+//! use glam::DVec2;
+//! use polydist_polygon::{Feature, SimplePolygon, predicates::Robust};
+//! use polydist_separation::{PolygonSeparation, Route, separation};
+//!
+//! // A U-shaped lot opening to the west and an L-shaped lot west of it: the U's pocket faces the L,
+//! // so its hull edge there is a lid and section 3 runs across a line through a hull edge.
+//! let u = [[50.0, 0.0], [90.0, 0.0], [90.0, 40.0], [50.0, 40.0], [50.0, 30.0], [75.0, 30.0], [75.0, 10.0], [50.0, 10.0]];
+//! let l = [[0.0, 0.0], [40.0, 0.0], [40.0, 15.0], [15.0, 15.0], [15.0, 40.0], [0.0, 40.0]];
+//! let (u, l) = (SimplePolygon::try_from(&u[..])?, SimplePolygon::try_from(&l[..])?);
+//! let PolygonSeparation::Separated { pair, route, .. } = separation::<Robust>(&l, &u).unwrap() else {
+//!     panic!("the lots are disjoint");
+//! };
+//! assert_eq!(pair.distance, 10.0);
+//! assert!(matches!(route, Route::HullFeatures | Route::SeparableChains));
+//! # Ok::<(), polydist_polygon::PolygonError>(())
+//! ```
 //!
 //! # Status
 //! This crate holds the parts of N. M. Amato, "An optimal algorithm for determining the separation
@@ -12,7 +31,9 @@
 //! | [`closest_visible_vertices`] | CVV of two chains separated by a line and monotone along it (edges perpendicular to the line allowed): Lemma 2, `W()` by hull scans, Lemma 3, `R()`, the tagged matrix `M` and SMAWK, `O(n_p + n_q)` | done (monotone chains only: the CVV of general chains is not that of their envelopes) |
 //! | [`CvvMatrix`], [`CveMatrix`], [`MatrixEntry`], [`EdgeEntry`], [`compare_entries`], [`compare_edge_entries`] | the matrices `M` themselves, for verification with `monotone_minima::check_totally_monotone_by` | done |
 //! | [`closest_visible_vertices_brute`], [`separation_brute`], [`perpendicular_envelope_brute`] | brute-force twins (test references, benchmark baselines) | done |
-//! | a linear-time envelope, chains with gaps, lines touched by both chains, the disjoint-hull fast path for polygons, section 2's separators | — | **not done**: see `docs/algorithms/separation.md` |
+//! | [`separation`], [`separation_of_disjoint`], [`intersection`], [`polygon_separation_brute`] | whole simple polygons: the exact intersection check (`O(N log N)`, only when the hulls meet), the disjoint-hull route (hull features, or section 3 on both boundaries across a line through a hull edge) | done for disjoint hulls; hulls that meet get [`SeparationError::HullsIntersect`] |
+//! | [`point_to_polygon`], [`segment_to_polygon`] | a point or a segment against a simple polygon, `O(n)` | done |
+//! | a linear-time envelope, chains with gaps, lines touched by both chains, section 2's separators | — | **not done**: see `docs/algorithms/separation.md` and `docs/algorithms/separation-polygons.md` |
 //!
 //! Lemma 2 reduces general chains to the setting in which the paper states Lemmas 4–7: a chain
 //! monotone along the line (the envelope, with perpendicular jumps at shadow points).
