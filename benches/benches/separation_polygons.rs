@@ -102,14 +102,7 @@ fn combs(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
 /// A slab `[0, 4] × [0, h]` with `t` saw teeth on its right side (tips at `x = 5`), and its mirror
 /// image right of it, shifted by half a tooth so that tips face notches, `1/4` beyond the tips.
 fn sawteeth(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
-    let t = (n / 4).max(1);
-    let mut p = vec![DVec2::new(0.0, 0.0), DVec2::new(4.0, 0.0)];
-    for k in 0..t {
-        let y = 2.0 * k as f64;
-        p.push(DVec2::new(5.0, y + 1.0));
-        p.push(DVec2::new(4.0, y + 2.0));
-    }
-    p.push(DVec2::new(0.0, 2.0 * t as f64));
+    let p = polydist_oracle::sawtooth((n / 4).max(1));
     // The mirror image x ↦ 10.25 − x, moved up by one (tips opposite notches), counter-clockwise.
     let q: Vec<DVec2> = p
         .iter()

@@ -23,10 +23,10 @@ use polydist_convex::{
 };
 use polydist_fixtures::hard_cases;
 use polydist_oracle::{
-    Feature as OFeature, HardAnswers, Relation, SplitMix64, convex_pair, ulps_error_sqrt,
+    Feature as OFeature, HardAnswers, Relation, SimpleHardAnswers, SplitMix64, convex_pair,
+    ulps_error_sqrt,
 };
 use polydist_polygon::{ConvexPolygon, Feature, SimplePolygon};
-use polydist_predicates::BigRational;
 use polydist_predicates::{Exact, Fast, Kernel, Robust};
 use polydist_separation::{PolygonSeparation, polygon_separation_brute, separation};
 
@@ -155,12 +155,12 @@ fn eval<K: Kernel>(
     }
 }
 
-/// Median time per query over the set, in nanoseconds.
-fn time_set<K: Kernel>(alg: Alg, set: &[(ConvexPolygon, ConvexPolygon)]) -> f64 {
+/// Median time per query over the set, in nanoseconds: one warm-up pass, then the median of `REPS`.
+fn time_set<T>(set: &[T], one: impl Fn(&T)) -> f64 {
     let run = || {
         let clock = Instant::now();
-        for (p, q) in set {
-            let _ = eval::<K>(alg, p, q, None);
+        for x in set {
+            one(x);
         }
         clock.elapsed().as_secs_f64() * 1e9 / set.len() as f64
     };
@@ -180,29 +180,57 @@ struct Row {
     cases: usize,
 }
 
-fn row<K: Kernel>(
-    alg: Alg,
+/// One row of the report: the accuracy of `eval` on the hard cases (with their answers) and its time
+/// on both sets.
+fn make_row<T, A>(
+    name: &'static str,
     kernel: &'static str,
-    random: &[(ConvexPolygon, ConvexPolygon)],
-    hard: &[(ConvexPolygon, ConvexPolygon)],
-    answers: &[HardAnswers],
+    (random, hard, answers): (&[T], &[T], &[A]),
+    eval: impl Fn(&T, Option<&A>) -> Option<Verdict>,
 ) -> Row {
     let (mut max_ulps, mut wrong) = (0.0f64, 0);
-    for ((p, q), a) in hard.iter().zip(answers) {
-        if let Some(v) = eval::<K>(alg, p, q, Some(a)) {
+    for (x, a) in hard.iter().zip(answers) {
+        if let Some(v) = eval(x, Some(a)) {
             max_ulps = max_ulps.max(v.ulps);
             wrong += usize::from(!v.right);
         }
     }
     Row {
-        name: alg.name(),
+        name,
         kernel,
-        random_ns: time_set::<K>(alg, random),
-        hard_ns: time_set::<K>(alg, hard),
+        random_ns: time_set(random, |x| {
+            let _ = eval(x, None);
+        }),
+        hard_ns: time_set(hard, |x| {
+            let _ = eval(x, None);
+        }),
         max_ulps,
         wrong,
         cases: hard.len(),
     }
+}
+
+type Convex = (ConvexPolygon, ConvexPolygon);
+type Simple = (SimplePolygon, SimplePolygon);
+
+fn row<K: Kernel>(
+    alg: Alg,
+    kernel: &'static str,
+    sets: (&[Convex], &[Convex], &[HardAnswers]),
+) -> Row {
+    make_row(alg.name(), kernel, sets, |(p, q), a| {
+        eval::<K>(alg, p, q, a)
+    })
+}
+
+fn simple_row<K: Kernel>(
+    alg: SimpleAlg,
+    kernel: &'static str,
+    sets: (&[Simple], &[Simple], &[SimpleAnswer]),
+) -> Row {
+    make_row(alg.name(), kernel, sets, |(p, q), a| {
+        eval_simple::<K>(alg, p, q, a)
+    })
 }
 
 /// The simple-polygon part: `separation` (the default: the intersection check, then the hull
@@ -222,34 +250,20 @@ impl SimpleAlg {
     }
 }
 
-/// One simple case's exact answer: the contact status and the squared distance with its pairs.
+/// One simple case's exact answer, with the oracle's features as polydist's.
 struct SimpleAnswer {
-    contact: String,
-    dist: BigRational,
+    exact: SimpleHardAnswers,
     pairs: Vec<(Feature, Feature)>,
 }
 
 fn simple_answer(c: &polydist_fixtures::HardCase) -> SimpleAnswer {
-    let d = c.answer("dist").expect("dist");
-    let f = |x: &str| {
-        let i = x[1..].parse().expect("index");
-        if x.starts_with('V') {
-            Feature::Vertex(i)
-        } else {
-            Feature::Edge(i)
-        }
-    };
-    SimpleAnswer {
-        contact: c.answer("contact").expect("contact")[0].clone(),
-        dist: d[0].parse().expect("rational"),
-        pairs: d[1..]
-            .iter()
-            .map(|w| {
-                let (a, b) = w.split_once(':').expect("pair");
-                (f(a), f(b))
-            })
-            .collect(),
-    }
+    let exact = SimpleHardAnswers::from_words(&c.answers).expect("answers");
+    let pairs = exact
+        .pairs
+        .iter()
+        .map(|&(f, g)| (ours(f), ours(g)))
+        .collect();
+    SimpleAnswer { exact, pairs }
 }
 
 fn eval_simple<K: Kernel>(
@@ -263,9 +277,9 @@ fn eval_simple<K: Kernel>(
         SimpleAlg::Brute => polygon_separation_brute::<K>(p, q),
     };
     let a = a?;
-    Some(match (black_box(r), a.contact.as_str()) {
+    Some(match (black_box(r), a.exact.contact.as_str()) {
         (Ok(PolygonSeparation::Separated { pair, .. }), "disjoint") => Verdict {
-            ulps: ulps_error_sqrt(pair.distance, &a.dist),
+            ulps: ulps_error_sqrt(pair.distance, &a.exact.dist),
             right: a.pairs.contains(&(pair.feature_p, pair.feature_q)),
         },
         (Ok(PolygonSeparation::Intersecting(_)), "touching" | "overlapping") => Verdict {
@@ -277,45 +291,6 @@ fn eval_simple<K: Kernel>(
             right: false,
         },
     })
-}
-
-fn time_simple<K: Kernel>(alg: SimpleAlg, set: &[(SimplePolygon, SimplePolygon)]) -> f64 {
-    let run = || {
-        let clock = Instant::now();
-        for (p, q) in set {
-            let _ = eval_simple::<K>(alg, p, q, None);
-        }
-        clock.elapsed().as_secs_f64() * 1e9 / set.len() as f64
-    };
-    run();
-    let mut t: Vec<f64> = (0..REPS).map(|_| run()).collect();
-    t.sort_by(f64::total_cmp);
-    t[REPS / 2]
-}
-
-fn simple_row<K: Kernel>(
-    alg: SimpleAlg,
-    kernel: &'static str,
-    random: &[(SimplePolygon, SimplePolygon)],
-    hard: &[(SimplePolygon, SimplePolygon)],
-    answers: &[SimpleAnswer],
-) -> Row {
-    let (mut max_ulps, mut wrong) = (0.0f64, 0);
-    for ((p, q), a) in hard.iter().zip(answers) {
-        if let Some(v) = eval_simple::<K>(alg, p, q, Some(a)) {
-            max_ulps = max_ulps.max(v.ulps);
-            wrong += usize::from(!v.right);
-        }
-    }
-    Row {
-        name: alg.name(),
-        kernel,
-        random_ns: time_simple::<K>(alg, random),
-        hard_ns: time_simple::<K>(alg, hard),
-        max_ulps,
-        wrong,
-        cases: hard.len(),
-    }
 }
 
 fn fmt_ns(ns: f64) -> String {
@@ -454,9 +429,10 @@ fn main() {
     let mut rows = Vec::new();
     for alg in Alg::ALL {
         eprintln!("{} …", alg.name());
-        rows.push(row::<Fast>(alg, "Fast", &random, &hard, &answers));
-        rows.push(row::<Robust>(alg, "Robust", &random, &hard, &answers));
-        rows.push(row::<Exact>(alg, "Exact", &random, &hard, &answers));
+        let sets = (&random[..], &hard[..], &answers[..]);
+        rows.push(row::<Fast>(alg, "Fast", sets));
+        rows.push(row::<Robust>(alg, "Robust", sets));
+        rows.push(row::<Exact>(alg, "Exact", sets));
     }
 
     // Simple polygons: the hard suite's disjoint-hull pairs, and random stars side by side.
@@ -490,13 +466,10 @@ fn main() {
     let mut srows = Vec::new();
     for alg in [SimpleAlg::Separation, SimpleAlg::Brute] {
         eprintln!("{} …", alg.name());
-        srows.push(simple_row::<Fast>(alg, "Fast", &srandom, &shard, &sanswers));
-        srows.push(simple_row::<Robust>(
-            alg, "Robust", &srandom, &shard, &sanswers,
-        ));
-        srows.push(simple_row::<Exact>(
-            alg, "Exact", &srandom, &shard, &sanswers,
-        ));
+        let sets = (&srandom[..], &shard[..], &sanswers[..]);
+        srows.push(simple_row::<Fast>(alg, "Fast", sets));
+        srows.push(simple_row::<Robust>(alg, "Robust", sets));
+        srows.push(simple_row::<Exact>(alg, "Exact", sets));
     }
 
     let mut md = String::new();

@@ -30,7 +30,7 @@ use glam::DVec2;
 use polydist_oracle::{
     Axis, Contact, Feature, Relation, SplitMix64, boundary_distance, cmmr, cocircular,
     cocircular_perturbed, comb, contact_status_convex, contact_status_simple, convex_distance,
-    convex_pair, directed_hausdorff_filled, min_vertex_distance, offset, parallel_facing,
+    convex_pair, directed_hausdorff_filled, min_vertex_distance, offset, parallel_facing, sawtooth,
     sign_orient, sliver, spiral, star, step_ulps, two_opt, with_gap_ulps,
 };
 
@@ -351,18 +351,6 @@ fn simple_case(out: &mut String, family: &str, name: &str, p: &[DVec2], q: &[DVe
     let _ = writeln!(out, "contact {contact}");
     let _ = writeln!(out, "dist {} {}", d.sq, pairs.join(" "));
     let _ = writeln!(out, "end");
-}
-
-/// A saw-tooth slab with `t` teeth facing right (tips at x = 5), on the grid of integers.
-fn sawtooth(t: usize) -> Vec<DVec2> {
-    let mut p = vec![DVec2::new(0.0, 0.0), DVec2::new(4.0, 0.0)];
-    for k in 0..t {
-        let y = 2.0 * k as f64;
-        p.push(DVec2::new(5.0, y + 1.0));
-        p.push(DVec2::new(4.0, y + 2.0));
-    }
-    p.push(DVec2::new(0.0, 2.0 * t as f64));
-    p
 }
 
 /// The simple-polygon families whose convex hulls are disjoint (the interlocked families wait for

@@ -32,23 +32,52 @@ pub struct HardAnswers {
     pub cmmr: BigRational,
 }
 
-impl HardAnswers {
-    /// Parses the answer lines of a case (keyword and words, as the fixtures loader gives them).
+/// The answers of one simple-polygon case (`fixtures/hard/simple.txt`): the contact status of the
+/// closed polygons and their exact squared boundary distance with every optimal pair.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SimpleHardAnswers {
+    /// `disjoint`, `touching` or `overlapping`.
+    pub contact: String,
+    /// The exact squared distance between the boundaries.
+    pub dist: BigRational,
+    /// Every optimal feature pair `(of P, of Q)`.
+    pub pairs: Vec<(Feature, Feature)>,
+}
+
+impl SimpleHardAnswers {
+    /// Parses the answer lines of a simple case.
     ///
     /// # Errors
     /// A message naming the keyword that is missing or malformed.
-    pub fn from_words(answers: &[(String, Vec<String>)]) -> Result<HardAnswers, String> {
-        let get = |k: &str| -> Result<&[String], String> {
-            answers
-                .iter()
-                .find(|(key, _)| key == k)
-                .map(|(_, w)| w.as_slice())
-                .filter(|w| !w.is_empty())
-                .ok_or_else(|| format!("missing `{k}`"))
-        };
-        let rat = |k: &str| -> Result<BigRational, String> {
-            BigRational::from_str(&get(k)?[0]).map_err(|_| format!("bad rational in `{k}`"))
-        };
+    pub fn from_words(answers: &[(String, Vec<String>)]) -> Result<SimpleHardAnswers, String> {
+        let words = Words(answers);
+        Ok(SimpleHardAnswers {
+            contact: words.get("contact")?[0].clone(),
+            dist: words.rational("dist")?,
+            pairs: words.feature_pairs("dist")?,
+        })
+    }
+}
+
+/// The answer lines of a case, looked up by keyword.
+struct Words<'a>(&'a [(String, Vec<String>)]);
+
+impl Words<'_> {
+    fn get(&self, k: &str) -> Result<&[String], String> {
+        self.0
+            .iter()
+            .find(|(key, _)| key == k)
+            .map(|(_, w)| w.as_slice())
+            .filter(|w| !w.is_empty())
+            .ok_or_else(|| format!("missing `{k}`"))
+    }
+
+    fn rational(&self, k: &str) -> Result<BigRational, String> {
+        BigRational::from_str(&self.get(k)?[0]).map_err(|_| format!("bad rational in `{k}`"))
+    }
+
+    /// The words after the first of line `k`, as `V3:E1` feature pairs.
+    fn feature_pairs(&self, k: &str) -> Result<Vec<(Feature, Feature)>, String> {
         let feature = |w: &str| -> Result<Feature, String> {
             let i = w.get(1..).and_then(|s| s.parse().ok());
             match (w.as_bytes().first(), i) {
@@ -57,36 +86,44 @@ impl HardAnswers {
                 _ => Err(format!("bad feature `{w}`")),
             }
         };
+        self.get(k)?[1..]
+            .iter()
+            .map(|w| {
+                let (a, b) = w.split_once(':').ok_or_else(|| format!("bad pair `{w}`"))?;
+                Ok((feature(a)?, feature(b)?))
+            })
+            .collect()
+    }
+}
+
+impl HardAnswers {
+    /// Parses the answer lines of a case (keyword and words, as the fixtures loader gives them).
+    ///
+    /// # Errors
+    /// A message naming the keyword that is missing or malformed.
+    pub fn from_words(answers: &[(String, Vec<String>)]) -> Result<HardAnswers, String> {
+        let words = Words(answers);
         let index = |w: &str| w.parse::<usize>().map_err(|_| format!("bad index `{w}`"));
         let indices = |k: &str| -> Result<Vec<usize>, String> {
-            get(k)?[1..].iter().map(|w| index(w)).collect()
+            words.get(k)?[1..].iter().map(|w| index(w)).collect()
         };
-        fn split(w: &str) -> Result<(&str, &str), String> {
-            w.split_once(':').ok_or_else(|| format!("bad pair `{w}`"))
-        }
         Ok(HardAnswers {
-            contact: get("contact")?[0].clone(),
-            dist: rat("dist")?,
-            pairs: get("dist")?[1..]
+            contact: words.get("contact")?[0].clone(),
+            dist: words.rational("dist")?,
+            pairs: words.feature_pairs("dist")?,
+            vdist: words.rational("vdist")?,
+            vpairs: words.get("vdist")?[1..]
                 .iter()
                 .map(|w| {
-                    let (a, b) = split(w)?;
-                    Ok((feature(a)?, feature(b)?))
-                })
-                .collect::<Result<_, String>>()?,
-            vdist: rat("vdist")?,
-            vpairs: get("vdist")?[1..]
-                .iter()
-                .map(|w| {
-                    let (a, b) = split(w)?;
+                    let (a, b) = w.split_once(':').ok_or_else(|| format!("bad pair `{w}`"))?;
                     Ok((index(a)?, index(b)?))
                 })
                 .collect::<Result<_, String>>()?,
-            hpq: rat("hpq")?,
+            hpq: words.rational("hpq")?,
             apq: indices("hpq")?,
-            hqp: rat("hqp")?,
+            hqp: words.rational("hqp")?,
             aqp: indices("hqp")?,
-            cmmr: rat("cmmr")?,
+            cmmr: words.rational("cmmr")?,
         })
     }
 }

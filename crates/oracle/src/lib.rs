@@ -92,10 +92,10 @@ pub use crate::generators::precision::{
 };
 pub use crate::generators::rng::SplitMix64;
 pub use crate::generators::simple::{
-    CombPair, PocketPair, comb, interleaved_combs, interleaved_combs_ulps, pocket_pair, spiral,
-    star, two_opt,
+    CombPair, PocketPair, comb, interleaved_combs, interleaved_combs_ulps, pocket_pair, sawtooth,
+    spiral, star, two_opt,
 };
-pub use crate::hard::HardAnswers;
+pub use crate::hard::{HardAnswers, SimpleHardAnswers};
 pub use crate::hausdorff::{
     cmmr, directed_hausdorff_filled, hausdorff_filled, per_vertex_sq_dist,
     sq_dist_point_filled_convex,

@@ -15,7 +15,7 @@ use polydist::convex::{
 use polydist::polygon::{ConvexPolygon, Feature};
 use polydist::predicates::{Exact, Fast, Kernel, Robust};
 use polydist_fixtures::{HardCase, hard_cases};
-use polydist_oracle::{HardAnswers, ulps_error, ulps_error_sqrt};
+use polydist_oracle::{HardAnswers, SimpleHardAnswers, ulps_error, ulps_error_sqrt};
 use std::collections::BTreeMap;
 
 /// The answers of a case, with the oracle's features as polydist's.
@@ -214,23 +214,12 @@ fn polygon_separation_on_every_simple_hard_case() {
     let cases = hard_cases("hard/simple.txt").expect("fixtures/hard/simple.txt");
     assert!(cases.len() >= 25, "the suite shrank: {} cases", cases.len());
     fn check<K: Kernel>(p: &SimplePolygon, q: &SimplePolygon, c: &HardCase, brute: bool) -> Check {
-        let contact = &c.answer("contact").expect("contact")[0];
-        let dist = c.answer("dist").expect("dist");
-        let sq: polydist::predicates::BigRational = dist[0].parse().expect("rational");
-        let pairs: Vec<(Feature, Feature)> = dist[1..]
+        let exact = SimpleHardAnswers::from_words(&c.answers).expect("answers");
+        let (contact, sq) = (&exact.contact, &exact.dist);
+        let pairs: Vec<(Feature, Feature)> = exact
+            .pairs
             .iter()
-            .map(|w| {
-                let (a, b) = w.split_once(':').expect("pair");
-                let f = |x: &str| {
-                    let i = x[1..].parse().expect("index");
-                    if x.starts_with('V') {
-                        Feature::Vertex(i)
-                    } else {
-                        Feature::Edge(i)
-                    }
-                };
-                (f(a), f(b))
-            })
+            .map(|&(f, g)| (ours(f), ours(g)))
             .collect();
         let answer = if brute {
             polygon_separation_brute::<K>(p, q)
@@ -245,7 +234,7 @@ fn polygon_separation_on_every_simple_hard_case() {
                         pair.feature_p, pair.feature_q
                     ));
                 }
-                let e = ulps_error_sqrt(pair.distance, &sq);
+                let e = ulps_error_sqrt(pair.distance, sq);
                 (e > 3.5).then(|| format!("distance off by {e} ulps"))
             }
             (Ok(PolygonSeparation::Intersecting(_)), "touching" | "overlapping") => None,

@@ -14,7 +14,7 @@ use core::fmt::Write as _;
 use glam::DVec2;
 
 use crate::load::Scene;
-use crate::report::{FrameResult, Report};
+use crate::report::{FrameResult, PairReport, Report};
 
 /// The scene panel's size in pixels.
 const W: f64 = 800.0;
@@ -127,6 +127,34 @@ fn chosen_frame(scene: &Scene, report: &Report) -> usize {
 }
 
 /// The frame of a pair at time `t` (a static pair's only frame).
+/// A segment between two realizing points of a pair (`class` and stroke colour), with a title.
+fn segment(
+    s: &mut String,
+    (class, colour): (&str, &str),
+    p: &PairReport,
+    (a, b): ([f64; 2], [f64; 2]),
+    what: &str,
+    view: &View,
+) {
+    let (a, b) = (
+        view.map(DVec2::from_array(a)),
+        view.map(DVec2::from_array(b)),
+    );
+    let _ = writeln!(
+        s,
+        r#"<line class="{class}" data-pair="{} {}" x1="{}" y1="{}" x2="{}" y2="{}" stroke="{colour}" stroke-width="1.5"><title>{} – {}: {}</title></line>"#,
+        esc(&p.a),
+        esc(&p.b),
+        num(a.x),
+        num(a.y),
+        num(b.x),
+        num(b.y),
+        esc(&p.a),
+        esc(&p.b),
+        esc(what)
+    );
+}
+
 fn frame_at(frames: &[FrameResult], t: f64, moving: bool) -> Option<&FrameResult> {
     if moving {
         frames.iter().find(|f| f.t == t)
@@ -240,42 +268,28 @@ pub fn render_svg(scene: &Scene, report: &Report) -> String {
             continue;
         };
         if let Some(c) = f.closest_points {
-            let (a, b) = (
-                view.map(DVec2::from_array(c.point_a)),
-                view.map(DVec2::from_array(c.point_b)),
-            );
-            let _ = writeln!(
-                s,
-                r#"<line class="closest" data-pair="{} {}" x1="{}" y1="{}" x2="{}" y2="{}" stroke="black" stroke-width="1.5"><title>{} – {}: distance {}</title></line>"#,
-                esc(&p.a),
-                esc(&p.b),
-                num(a.x),
-                num(a.y),
-                num(b.x),
-                num(b.y),
-                esc(&p.a),
-                esc(&p.b),
-                f.distance
-                    .map_or_else(|| "-".to_owned(), |d| format!("{d}"))
+            let d = f
+                .distance
+                .map_or_else(|| "-".to_owned(), |d| format!("{d}"));
+            let what = format!("distance {d}");
+            segment(
+                &mut s,
+                ("closest", "black"),
+                p,
+                (c.point_a, c.point_b),
+                &what,
+                &view,
             );
         }
         if let Some(r) = f.separation {
-            let (a, b) = (
-                view.map(DVec2::from_array(r.point_a)),
-                view.map(DVec2::from_array(r.point_b)),
-            );
-            let _ = writeln!(
-                s,
-                r#"<line class="separation" data-pair="{} {}" x1="{}" y1="{}" x2="{}" y2="{}" stroke="darkgreen" stroke-width="1.5"><title>{} – {}: separation {}</title></line>"#,
-                esc(&p.a),
-                esc(&p.b),
-                num(a.x),
-                num(a.y),
-                num(b.x),
-                num(b.y),
-                esc(&p.a),
-                esc(&p.b),
-                r.distance
+            let what = format!("separation {}", r.distance);
+            segment(
+                &mut s,
+                ("separation", "darkgreen"),
+                p,
+                (r.point_a, r.point_b),
+                &what,
+                &view,
             );
         }
         if let Some(h) = f.hausdorff.as_deref() {

@@ -343,3 +343,21 @@ pub fn pocket_pair(rng: &mut SplitMix64, n_q: usize, gap: f64) -> PocketPair {
         .collect();
     PocketPair { p, q, gap: g }
 }
+
+/// A saw-tooth slab: the rectangle `[0, 4] × [0, 2t]` with `t` saw teeth on its right side, tips at
+/// `x = 5`, `y = 2k + 1` (ccw, integer coordinates, exact). Two of them facing each other, tips
+/// opposite notches, make the hull-disjoint pair whose closest hull features are lids.
+///
+/// # Panics
+/// Panics if `t` is 0.
+pub fn sawtooth(t: usize) -> Vec<DVec2> {
+    assert!(t >= 1, "sawtooth: at least one tooth");
+    let mut p = vec![DVec2::new(0.0, 0.0), DVec2::new(4.0, 0.0)];
+    for k in 0..t {
+        let y = 2.0 * k as f64;
+        p.push(DVec2::new(5.0, y + 1.0));
+        p.push(DVec2::new(4.0, y + 2.0));
+    }
+    p.push(DVec2::new(0.0, 2.0 * t as f64));
+    p
+}
