@@ -220,6 +220,34 @@ fn main() {
             );
         }
     }
+    // Near-ties beyond f64's reach: parallel facing pairs moved far from the origin (scaled by a power
+    // of two so that the move is exact), then one end of Q's facing edge moved 1–3 ulps *at that
+    // magnitude*: which end of the facing edges is nearer is decided by less than the rounding error
+    // of a plain f64 distance evaluation there.
+    for (k, dir) in [(1, 0), (3, 4), (7, -2), (1, 1), (-5, 12), (2, 1)]
+        .into_iter()
+        .enumerate()
+    {
+        let f = parallel_facing(&mut rng, [4, 5, 7, 6, 9, 8][k], dir, 2f64.powi(-20));
+        for off in [2f64.powi(27), 2f64.powi(40)] {
+            let e = off.log2() as i32 - 20;
+            let scale =
+                |v: &[DVec2]| -> Vec<DVec2> { v.iter().map(|&x| x * 2f64.powi(e)).collect() };
+            let (Some(p), Some(q)) = (moved(&scale(&f.p), off, off), moved(&scale(&f.q), off, off))
+            else {
+                continue;
+            };
+            for steps in [1i64, 2, 3] {
+                let mut q = q.clone();
+                let last = q.len() - 1;
+                q[last].x = step_ulps(q[last].x, if k % 2 == 0 { steps } else { -steps });
+                if polydist_oracle::is_convex(&q) && polydist_oracle::is_convex(&p) {
+                    let name = format!("{}_{}_2^{}_{steps}ulp", dir.0, dir.1, off.log2());
+                    case(&mut out, "near_tie_far", &name, &p, &q);
+                }
+            }
+        }
+    }
     // Co-circular vertex sets (McKenna–Toussaint): the lattice points of x² + y² = 5^(2k) with
     // x > 5^k / 2, every one at the same distance from Q's vertex at the origin; then one vertex moved
     // one ulp in or out.

@@ -189,6 +189,7 @@ fn the_suite_covers_every_family() {
         "cocircular",
         "cocircular_perturbed",
         "cocircular_far",
+        "near_tie_far",
         "collinear_input",
         "sliver",
         "sliver_1e9",
