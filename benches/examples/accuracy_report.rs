@@ -483,7 +483,8 @@ fn main() {
         "Inputs: **random** = 40 pairs of disjoint random convex 64-gons (the oracle's `convex_pair`, \
          `Relation::Far`); **hard** = the {} cases of the hard-case suite (`fixtures/hard/convex.txt`: \
          nearly touching pairs 1–1000 ulps apart, exact contacts, offsets up to 1e15, parallel and \
-         one-ulp-off-parallel edges, co-circular vertex sets, collinear inputs, slivers, overlapping, \
+         one-ulp-off-parallel edges, near ties moved to 2^27 and 2^40 then tilted by 1–3 ulps there, \
+         co-circular vertex sets (also far from the origin), collinear inputs, slivers, overlapping, \
          nested and identical polygons), each stored with its exact answers from the oracle. Time: \
          median of {REPS} passes over the set after one warm-up pass, per query. Error: the worst, \
          over the hard cases, of the reported distance (or Hausdorff distance, or CMMR value) \
@@ -557,7 +558,10 @@ fn main() {
     md.push_str(
         "**Fast** evaluates the same predicates in plain `f64`: it always terminates, but near \
          ties it may choose a wrong feature or outcome (the `wrong` column); use it only when \
-         inputs are known to be far from degenerate and every nanosecond counts. **Exact** \
+         inputs are known to be far from degenerate and every nanosecond counts. On this suite \
+         it is rarely wrong: its predicates take differences of nearby coordinates first, which \
+         are exact in `f64`, so large offsets alone do not defeat it; a plain `f64` distance \
+         formula (which rounds squares of far-away coordinates) is far more fragile. **Exact** \
          evaluates every predicate in exact arithmetic without a filter; its answers are the same \
          as Robust's, at a much higher cost, and it adds exact rational results \
          (`distance_exact`, `hausdorff_squared_exact`): use it as a reference, or when an exact \
