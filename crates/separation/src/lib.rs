@@ -67,6 +67,7 @@ mod cvv;
 mod envelope;
 mod error;
 mod frame;
+mod geodesic;
 mod param;
 mod pieces;
 mod polygon;
@@ -74,6 +75,7 @@ mod region;
 mod result;
 mod sigma;
 mod simple_distance;
+mod triangulate;
 mod wedge;
 
 pub use brute::{closest_visible_vertices_brute, separation_brute};
@@ -81,6 +83,9 @@ pub use cve::{CveMatrix, EdgeEntry, compare_edge_entries};
 pub use cvv::{CvvMatrix, MatrixEntry, closest_visible_vertices, compare_entries};
 pub use envelope::{Envelope, perpendicular_envelope, perpendicular_envelope_brute};
 pub use error::{Chain, SeparationError};
+pub use geodesic::{
+    Hit, first_hit, first_hit_brute, segment_in_polygon, shortest_path, shortest_path_brute,
+};
 pub use polygon::{
     BoundaryPiece, Intersection, PolygonSeparation, Route, intersection, polygon_separation_brute,
     separation, separation_of_disjoint,
@@ -88,3 +93,6 @@ pub use polygon::{
 pub use result::{ChainSeparation, ClosestPair, Cvv, CvvStats, SeparationStats};
 pub use sigma::separation_of_chains;
 pub use simple_distance::{BoundaryPoint, PointToPolygon, point_to_polygon, segment_to_polygon};
+pub use triangulate::{
+    Neighbor, Triangulation, TriangulationError, triangulate, triangulate_brute,
+};
