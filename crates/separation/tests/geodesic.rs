@@ -156,6 +156,16 @@ fn family(rng: &mut SplitMix64, n: usize) -> Vec<(String, Vec<DVec2>)> {
             break;
         }
     }
+    // Transposed copies: (x, y) → (y, x), reversed to stay counter-clockwise (vertical runs become
+    // horizontal and the other way round, so both sweep tie-breaks are exercised).
+    let transposed: Vec<(String, Vec<DVec2>)> = out
+        .iter()
+        .map(|(name, p)| {
+            let q = p.iter().rev().map(|v| DVec2::new(v.y, v.x)).collect();
+            (format!("{name}-t"), q)
+        })
+        .collect();
+    out.extend(transposed);
     let far: Vec<(String, Vec<DVec2>)> = out
         .iter()
         .filter_map(|(name, p)| offset(p, 1e12, -1e12).map(|q| (format!("{name}+1e12"), q)))
@@ -353,6 +363,36 @@ fn predicate_calls_are_n_log_n() {
                 "{name} n={m}: {calls} calls, {:.3} per n log2 n",
                 calls / (m * m.log2())
             );
+        }
+    }
+}
+
+/// `O(n)` geodesics by counting: predicate calls per vertex stay below a fixed constant.
+#[test]
+fn geodesic_predicate_calls_are_linear() {
+    const PER_VERTEX: u64 = 8;
+    let mut rng = SplitMix64::new(8);
+    for n in [64usize, 1024, 16384] {
+        for (name, ring) in [
+            ("comb", comb(n / 4, 5, 1)),
+            ("star", star(&mut rng, n, n / 4)),
+            ("spiral", spiral(8, (n / 16) as u32)),
+        ] {
+            let m = ring.len();
+            let tri = triangulate::<Robust>(&ring).unwrap();
+            for (s, t) in [(0, m / 2), (1, m - 2), (m / 3, 2 * m / 3)] {
+                reset_predicate_counts();
+                let path = shortest_path::<Counted<Robust>>(&tri, &ring, s, t);
+                let calls = predicate_counts().total();
+                assert!(
+                    calls <= PER_VERTEX * m as u64,
+                    "{name} n={m} {s}->{t}: {calls} calls"
+                );
+                println!(
+                    "{name} n={m} {s}->{t}: {calls} calls, {} path vertices",
+                    path.len()
+                );
+            }
         }
     }
 }
