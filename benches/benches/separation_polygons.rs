@@ -6,7 +6,10 @@
 //! - `polygons/combs`: two combs whose teeth face each other tip to tip (not interleaved);
 //! - `polygons/sawteeth`: two saw-tooth slabs facing each other, the tips of one opposite the notches
 //!   of the other: the closest hull features are lids, so section 3 runs (the others mostly end at
-//!   the hull shortcut).
+//!   the hull shortcut);
+//! - `polygons/interlocked_combs`: two combs whose teeth interleave, clearance 1/8: the hulls meet,
+//!   so the query goes through Amato's separator (triangulation of the region between the facing
+//!   chains, geodesic, extensions, greedy pruning, subchains).
 //!
 //! Series, per `N`:
 //! - `validate`: building both `SimplePolygon`s (exact simplicity sweep), which a caller does once;
@@ -99,6 +102,12 @@ fn combs(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
     (a, b)
 }
 
+/// Two combs with interleaved teeth (`polydist_oracle::interleaved_combs`), clearance 1/8.
+fn interlocked_combs(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
+    let pair = polydist_oracle::interleaved_combs((n / 8).max(1), 5, 0.125);
+    (pair.a, pair.b)
+}
+
 /// A slab `[0, 4] × [0, h]` with `t` saw teeth on its right side (tips at `x = 5`), and its mirror
 /// image right of it, shifted by half a tooth so that tips face notches, `1/4` beyond the tips.
 fn sawteeth(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
@@ -132,7 +141,7 @@ fn geo_polygon(c: &[DVec2]) -> Polygon<f64> {
 
 fn query<K: Kernel>(p: &SimplePolygon, q: &SimplePolygon) -> f64 {
     separation_of_disjoint::<K>(p, q)
-        .expect("disjoint hulls")
+        .expect("disjoint polygons")
         .distance()
 }
 
@@ -227,6 +236,7 @@ fn benches() {
     run(&mut c, "polygons/spirals", spirals);
     run(&mut c, "polygons/combs", combs);
     run(&mut c, "polygons/sawteeth", sawteeth);
+    run(&mut c, "polygons/interlocked_combs", interlocked_combs);
     c.final_summary();
 }
 

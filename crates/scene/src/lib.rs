@@ -27,8 +27,8 @@
 //! - draws a run as SVG ([`render_svg`]).
 //!
 //! Every effect but `separation` needs convex bodies ([`SceneError::NeedsConvex`]); `separation` of
-//! simple bodies whose convex hulls meet is reported per frame as `unsupported` (Amato's separators
-//! are not built yet), and the run goes on.
+//! a simple body in a pocket of the other (one convex hull inside the other) is reported per frame as
+//! `unsupported` (the containing case of Amato's separator is not built yet), and the run goes on.
 //!
 //! # Numbers
 //! Posed polygons are rounded coordinates: every decision is exact for them (under the Robust and

@@ -98,8 +98,9 @@ pub enum Status {
     /// The closed bodies meet (from `separation`, which does not tell touching from overlapping for
     /// simple polygons).
     Intersecting,
-    /// The pair needs an algorithm this version lacks (see `error`): `separation` of bodies whose
-    /// convex hulls meet needs Amato's separators, not built yet.
+    /// The pair needs an algorithm this version lacks (see `error`): `separation` of a body lying in
+    /// a pocket of the other (one convex hull inside the other) or pinched against it needs the
+    /// containing or pinched case of Amato's separator, not built yet.
     Unsupported,
 }
 

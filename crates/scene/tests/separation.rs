@@ -1,5 +1,6 @@
 //! The `separation` effect on simple bodies: answers against the separation crate's brute-force twin
-//! on the posed bodies, the `intersecting` and `unsupported` outcomes (the run goes on), the
+//! on the posed bodies (the separator route for interlocked combs), the `intersecting` and
+//! `unsupported` (a polygon in a pocket of the other) outcomes (the run goes on), the
 //! counters (only the asked work is done), and the `NeedsConvex` rule for the other effects.
 
 use glam::DVec2;
@@ -33,9 +34,15 @@ kind = "simple"
 # Teeth pointing down into comb_a's gaps, without touching: the hulls meet.
 vertices = [[2, 22], [3, 22], [3, 25], [6, 25], [6, 22], [7, 22], [7, 26], [2, 26]]
 
+[[body]]
+id = "pebble"
+kind = "simple"
+# Inside u's pocket: CH(pebble) lies inside CH(u), the containing case, not built yet.
+vertices = [[1, 4], [2, 4], [2, 6], [1, 6]]
+
 [[query]]
 name = "clearance"
-pairs = [["u", "l"], ["comb_a", "comb_b"]]
+pairs = [["u", "l"], ["comb_a", "comb_b"], ["u", "pebble"]]
 effects = ["separation"]
 "#;
 
@@ -85,13 +92,62 @@ fn separation_frames_match_the_brute_force_and_the_run_goes_on() {
         assert_eq!(s.distance, pair.distance, "t = {}", f.t);
         assert_eq!(s.distance, 12.0 - 2.0 * f.t);
     }
-    // The combs interlock: disjoint, but their hulls meet, which needs the separators.
+    // The combs interlock: disjoint, but their hulls meet: Amato's separator answers.
+    let comb = |v: &[[i32; 2]]| {
+        let v: Vec<DVec2> = v
+            .iter()
+            .map(|&[x, y]| DVec2::new(f64::from(x), f64::from(y)))
+            .collect();
+        SimplePolygon::try_new(&v).unwrap()
+    };
+    let ca = comb(&[
+        [0, 20],
+        [9, 20],
+        [9, 24],
+        [8, 24],
+        [8, 21],
+        [5, 21],
+        [5, 24],
+        [4, 24],
+        [4, 21],
+        [1, 21],
+        [1, 24],
+        [0, 24],
+    ]);
+    let cb = comb(&[
+        [2, 22],
+        [3, 22],
+        [3, 25],
+        [6, 25],
+        [6, 22],
+        [7, 22],
+        [7, 26],
+        [2, 26],
+    ]);
+    let Ok(PolygonSeparation::Separated { pair, .. }) =
+        polygon_separation_brute::<Robust>(&ca, &cb)
+    else {
+        panic!("the combs are disjoint");
+    };
     assert!(!combs.frames.is_empty());
     for f in &combs.frames {
+        assert_eq!(f.status, Some(Status::Disjoint));
+        let s = f.separation.expect("separation");
+        assert_eq!(s.distance, pair.distance);
+        assert_eq!(s.route, "separators");
+    }
+    // The pebble in u's pocket: the containing case is reported per frame, and the run goes on.
+    let pebble = report
+        .pairs
+        .iter()
+        .find(|p| p.b == "pebble")
+        .expect("pair u–pebble");
+    assert!(!pebble.frames.is_empty());
+    for f in &pebble.frames {
         assert_eq!(f.status, Some(Status::Unsupported));
         assert!(f.error.as_deref().unwrap_or("").contains("separators"));
     }
-    assert!(combs.failed && !ul.failed && report.failed);
+    assert!(pebble.failed && !combs.failed && !ul.failed && report.failed);
     // Only the asked work: separation, no convex distance of any kind.
     let c = report.costs;
     assert!(c.separation.calls >= 9);

@@ -82,11 +82,13 @@ pub enum SeparationError {
         /// The caller's index of a vertex where the violation was found.
         index: usize,
     },
-    /// The two simple polygons are disjoint but their convex hulls meet (interlocked shapes, or one
-    /// polygon in a pocket of the other). Section 2 of Amato's report handles this case with a
-    /// separator `S(P, Q)`, which is not built yet: see `docs/algorithms/separation.md`.
+    /// The two simple polygons are disjoint, their convex hulls meet, and the configuration is one
+    /// the separator `S(P, Q)` of Amato's section 2 is not built for yet: one hull contains the other
+    /// (a polygon in a pocket of the other: the cyclic separator of the containing case), or one
+    /// polygon touches the hull of the union in a single vertex (a pinched channel). See
+    /// `docs/algorithms/separator.md`.
     #[error(
-        "the convex hulls of the two polygons meet: this case needs Amato's separators, not implemented yet"
+        "the convex hulls of the two polygons meet and one contains the other (or the channel between them is pinched): this case of Amato's separators is not implemented yet"
     )]
     HullsIntersect,
     /// The search found no admissible vertex pair. With an exact kernel this cannot happen (it would

@@ -31,9 +31,11 @@
 //! | [`closest_visible_vertices`] | CVV of two chains separated by a line and monotone along it (edges perpendicular to the line allowed): Lemma 2, `W()` by hull scans, Lemma 3, `R()`, the tagged matrix `M` and SMAWK, `O(n_p + n_q)` | done (monotone chains only: the CVV of general chains is not that of their envelopes) |
 //! | [`CvvMatrix`], [`CveMatrix`], [`MatrixEntry`], [`EdgeEntry`], [`compare_entries`], [`compare_edge_entries`] | the matrices `M` themselves, for verification with `monotone_minima::check_totally_monotone_by` | done |
 //! | [`closest_visible_vertices_brute`], [`separation_brute`], [`perpendicular_envelope_brute`] | brute-force twins (test references, benchmark baselines) | done |
-//! | [`separation`], [`separation_of_disjoint`], [`intersection`], [`polygon_separation_brute`] | whole simple polygons: the exact intersection check (`O(N log N)`, only when the hulls meet), the disjoint-hull route (hull features, or section 3 on both boundaries across a line through a hull edge) | done for disjoint hulls; hulls that meet get [`SeparationError::HullsIntersect`] |
+//! | [`separation`], [`separation_of_disjoint`], [`intersection`], [`polygon_separation_brute`] | whole simple polygons: the exact intersection check (`O(N log N)`, only when the hulls meet), the disjoint-hull route (hull features, or section 3 on both boundaries across a line through a hull edge) | done for disjoint hulls |
+//! | [`Route::Separators`] (inside [`separation`]) | section 2's separator `S(P, Q)` when the hulls meet: facing chains, the region's triangulation, the geodesic, two-sided extensions, greedy pruning, report 001's subchains, then `σ(P_i, Q_i)` | done for the non-containing case (checked against properties (i)–(iv) and Lemma 1 by an `O(N²)` checker); the containing and pinched cases get [`SeparationError::HullsIntersect`]; subproblems whose line touches both chains are scanned (`O(|P_i||Q_i|)`) |
+//! | [`triangulate`], [`shortest_path`], [`first_hit`] | exact triangulation of a simple polygon with collinear vertices (`O(n log n)`), geodesics by the funnel, ray-shooting arms | done (`docs/algorithms/triangulation.md`) |
 //! | [`point_to_polygon`], [`segment_to_polygon`] | a point or a segment against a simple polygon, `O(n)` | done |
-//! | a linear-time envelope, chains with gaps, lines touched by both chains, section 2's separators | — | **not done**: see `docs/algorithms/separation.md` and `docs/algorithms/separation-polygons.md` |
+//! | a linear-time envelope, chains with gaps, lines touched by both chains, the separator's containing case | — | **not done**: see `docs/algorithms/separation.md` and `docs/algorithms/separation-polygons.md` |
 //!
 //! Lemma 2 reduces general chains to the setting in which the paper states Lemmas 4–7: a chain
 //! monotone along the line (the envelope, with perpendicular jumps at shadow points).
@@ -73,6 +75,7 @@ mod pieces;
 mod polygon;
 mod region;
 mod result;
+mod separator;
 mod sigma;
 mod simple_distance;
 mod triangulate;

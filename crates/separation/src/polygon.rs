@@ -6,7 +6,8 @@
 //! nonintersecting simple polygons" (UIUC report UILU-ENG-92-2248, 1992), section 2: when the convex
 //! hulls `CH(P)` and `CH(Q)` are disjoint, a line separates the polygons and section 3 (the separable
 //! chains, [`separation_of_chains`](crate::separation_of_chains)) applies to the boundaries directly;
-//! otherwise the report builds a separator `S(P, Q)`.
+//! otherwise the report builds a separator `S(P, Q)` (built here for the non-containing case:
+//! `separator.rs`, `docs/algorithms/separator.md`).
 //!
 //! # What is built
 //! - [`intersection`]: do the closed polygons meet? Boundaries swept together (Shamos–Hoey), then one
@@ -17,10 +18,13 @@
 //!   whole boundaries, each passed as a closed chain.
 //! - [`separation_brute`](crate::polygon_separation_brute): the `O(nm)` twin.
 //!
+//! - hulls that meet, polygons disjoint, neither hull inside the other: the separator route
+//!   ([`Route::Separators`]).
+//!
 //! # What is not built
-//! Polygons whose hulls meet (interlocked combs, spirals, one polygon in a pocket of the other) need
-//! Amato's separators (section 2); they get [`SeparationError::HullsIntersect`]. See
-//! `docs/algorithms/separation.md`.
+//! One polygon in a pocket of the other (one hull inside the other: the cyclic separator of the
+//! containing case) and a pinched channel get [`SeparationError::HullsIntersect`]. See
+//! `docs/algorithms/separator.md`.
 
 use glam::DVec2;
 use polydist_convex::{Separation, distance_with_hint};
@@ -30,6 +34,7 @@ use polydist_polygon::{ConvexPolygon, Feature, Location, SimplePolygon};
 use crate::brute::separation_brute;
 use crate::error::{Chain, SeparationError};
 use crate::result::{ClosestPair, SeparationStats};
+use crate::separator;
 use crate::sigma::separation_of_chains;
 
 /// A straight piece of a polygon's boundary between two of the caller's vertices: internal edge `e`
@@ -72,6 +77,9 @@ pub enum Route {
     HullFeatures,
     /// Section 3 on the two boundaries, separated by a line through an edge of one hull.
     SeparableChains,
+    /// The hulls meet: Amato's separator `S(P, Q)` (non-containing case), then the subproblems
+    /// `σ(P_i, Q_i)`; see [`SeparationStats`] for the separator's counts.
+    Separators,
     /// The brute-force twin.
     BruteForce,
     /// The `O(n)` scan of a segment against every edge and vertex
@@ -89,7 +97,8 @@ pub enum PolygonSeparation {
         pair: ClosestPair,
         /// Which computation found it.
         route: Route,
-        /// Operation counts of section 3 (zero unless `route` is [`Route::SeparableChains`]).
+        /// Operation counts of section 3 ([`Route::SeparableChains`]) or of the separator
+        /// ([`Route::Separators`]); zero for the other routes.
         stats: SeparationStats,
     },
     /// The closed polygons meet (σ is 0 and no pair is reported).
@@ -165,13 +174,20 @@ fn piece(p: &SimplePolygon, e: usize) -> BoundaryPiece {
 ///
 /// First the hulls (as in [`separation_of_disjoint`]): disjoint hulls hold disjoint polygons, and the
 /// fast path answers. When the hulls meet, [`intersection`] decides whether the polygons meet
-/// ([`PolygonSeparation::Intersecting`]); if they do not, the separator case remains. Every decision is
-/// exact under `K` = `Robust` or `Exact`.
+/// ([`PolygonSeparation::Intersecting`]); if they do not, Amato's separator `S(P, Q)` reduces σ to
+/// subproblems ([`Route::Separators`]; `docs/algorithms/separator.md`). Every decision is exact under
+/// `K` = `Robust` or `Exact`.
 ///
 /// # Errors
-/// [`SeparationError::HullsIntersect`] when the polygons are disjoint but their convex hulls meet (the
-/// separator case of section 2, not built yet); [`SeparationError::Inconsistent`] only under the
-/// `Fast` kernel.
+/// [`SeparationError::HullsIntersect`] when the polygons are disjoint and one convex hull lies inside
+/// the other (the separator's containing case, not built yet) or they pinch at a vertex of the hull of
+/// the union; [`SeparationError::Inconsistent`] only under the `Fast` kernel.
+///
+/// # Complexity
+/// Disjoint hulls: as [`separation_of_disjoint`]. Hulls that meet: `O(N log N)` for the intersection
+/// sweep and the triangulation of the region between the facing chains, `O(N)` for the geodesic, the
+/// extension walks (not linear in the worst case), and `O(Σ |P_i| · |Q_i|)` for the subproblems that
+/// section 3 cannot take (see the separator page).
 ///
 /// # Complexity
 /// As [`separation_of_disjoint`] when the hulls are disjoint (`O(N)` plus section 3); `O(N log N)` for
@@ -203,12 +219,12 @@ pub fn separation<K: Kernel>(
     q: &SimplePolygon,
 ) -> Result<PolygonSeparation, SeparationError> {
     // Disjoint hulls contain disjoint polygons: the sweep is needed only when the hulls meet.
-    match separation_of_disjoint::<K>(p, q) {
-        Err(SeparationError::HullsIntersect) => match intersection::<K>(p, q) {
+    match hull_route::<K>(p, q)? {
+        Ok(answer) => Ok(answer),
+        Err(()) => match intersection::<K>(p, q) {
             Some(meet) => Ok(PolygonSeparation::Intersecting(meet)),
-            None => Err(SeparationError::HullsIntersect),
+            None => separator_route::<K>(p, q),
         },
-        answer => answer,
     }
 }
 
@@ -227,10 +243,13 @@ pub fn separation<K: Kernel>(
 /// ([`separation_of_chains`]) on the two whole boundaries, each passed as the closed chain
 /// `v_0, …, v_{n−1}, v_0` of its internal vertices. Features are mapped back to the caller's.
 ///
+/// When the hulls meet, Amato's separator (as in [`separation`], without the intersection sweep).
+///
 /// # Errors
-/// [`SeparationError::HullsIntersect`] when the hulls meet (also when the polygons intersect: the
-/// precondition is not checked); [`SeparationError::Inconsistent`] and any error of
-/// [`separation_of_chains`] only under the `Fast` kernel.
+/// [`SeparationError::HullsIntersect`] when one hull lies inside the other or the channel is pinched
+/// (the polygons' disjointness is not checked; on meeting polygons the answer is unspecified but no
+/// panic); [`SeparationError::Inconsistent`] and any error of [`separation_of_chains`] only under
+/// the `Fast` kernel.
 ///
 /// # Complexity
 /// `O(N)`: `O(N)` for the hulls and the separating line, `O(log N)` for the hull distance, and
@@ -251,10 +270,21 @@ pub fn separation_of_disjoint<K: Kernel>(
     p: &SimplePolygon,
     q: &SimplePolygon,
 ) -> Result<PolygonSeparation, SeparationError> {
+    match hull_route::<K>(p, q)? {
+        Ok(answer) => Ok(answer),
+        Err(()) => separator_route::<K>(p, q),
+    }
+}
+
+/// The disjoint-hull route; `Err(())` when the hulls meet.
+fn hull_route<K: Kernel>(
+    p: &SimplePolygon,
+    q: &SimplePolygon,
+) -> Result<Result<PolygonSeparation, ()>, SeparationError> {
     let (hp, hq) = (p.convex_hull_with::<K>(), q.convex_hull_with::<K>());
     let (sep, hint) = distance_with_hint::<K>(&hp, &hq, None);
     let Separation::Disjoint(closest) = sep else {
-        return Err(SeparationError::HullsIntersect);
+        return Ok(Err(()));
     };
     let (fp, fq) = hint.internal_pair().ok_or(SeparationError::Inconsistent)?;
     let lid = |h: &ConvexPolygon, f: Feature| matches!(f, Feature::Edge(e) if h.is_lid(e));
@@ -262,7 +292,7 @@ pub fn separation_of_disjoint<K: Kernel>(
         // Both closest hull features lie on the boundaries: σ ≥ dist(CH(P), CH(Q)) (the boundaries lie
         // in the hulls) and this pair realizes it, so it is optimal. The hulls' caller maps name the
         // polygons' caller features.
-        return Ok(PolygonSeparation::Separated {
+        return Ok(Ok(PolygonSeparation::Separated {
             pair: ClosestPair {
                 distance: closest.distance,
                 squared_distance: closest.squared_distance,
@@ -273,20 +303,37 @@ pub fn separation_of_disjoint<K: Kernel>(
             },
             route: Route::HullFeatures,
             stats: SeparationStats::default(),
-        });
+        }));
     }
     let (a, b) = separating_edge::<K>(&hp, fp, &hq, fq).ok_or(SeparationError::Inconsistent)?;
     let (cp, cq) = (closed_chain(p), closed_chain(q));
     let s = separation_of_chains::<K>(&cp, &cq, a, b)?;
-    Ok(PolygonSeparation::Separated {
+    Ok(Ok(PolygonSeparation::Separated {
         pair: to_caller::<K>(p, q, s.pair),
         route: Route::SeparableChains,
         stats: s.stats,
+    }))
+}
+
+/// The hulls meet and the polygons are disjoint: Amato's separator, then the subproblems.
+fn separator_route<K: Kernel>(
+    p: &SimplePolygon,
+    q: &SimplePolygon,
+) -> Result<PolygonSeparation, SeparationError> {
+    let built = match separator::build::<K>(p, q)? {
+        Ok(b) => b,
+        Err(_) => return Err(SeparationError::HullsIntersect),
+    };
+    let (pair, stats) = separator::solve::<K>(p, q, &built)?;
+    Ok(PolygonSeparation::Separated {
+        pair: to_caller::<K>(p, q, pair),
+        route: Route::Separators,
+        stats,
     })
 }
 
 /// The internal vertices of `p` followed by its first vertex again: the boundary as a closed chain.
-fn closed_chain(p: &SimplePolygon) -> Vec<DVec2> {
+pub(crate) fn closed_chain(p: &SimplePolygon) -> Vec<DVec2> {
     let v = p.vertices();
     let mut c = Vec::with_capacity(v.len() + 1);
     c.extend_from_slice(v);

@@ -59,6 +59,18 @@ pub struct SeparationStats {
     pub pieces_q: usize,
     /// Entries of the two CVE matrices evaluated by SMAWK.
     pub cve_entries_evaluated: usize,
+    /// Separator route only: the kept segments `l_0 … l_{m−1}` of `S(P, Q)`.
+    pub separator_segments: usize,
+    /// Separator route only: `Σ (|P_i| + |Q_i|)`, the vertices handed to the subproblems.
+    pub subproblem_vertices: usize,
+    /// Separator route only: subproblems solved by section 3 across the line of `l_i`.
+    pub subproblems_section3: usize,
+    /// Separator route only: subproblems scanned exactly in `O(|P_i| · |Q_i|)` because the line of
+    /// `l_i` touches both subchains (section 3 for such lines is not built).
+    pub subproblems_scanned: usize,
+    /// Separator route only: cuts not found where the construction puts them (0 under the exact
+    /// kernels in every test); the subchain then runs to the end of its wall, which is still sound.
+    pub cut_fallbacks: usize,
 }
 
 /// The separation of two chains, a realizing pair, and the work done.

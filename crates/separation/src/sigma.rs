@@ -176,6 +176,7 @@ pub fn separation_of_chains<K: Kernel>(
             pieces_p: stats_pieces.0,
             pieces_q: stats_pieces.1,
             cve_entries_evaluated: m_pq.lookups() + m_qp.lookups(),
+            ..SeparationStats::default()
         },
     })
 }

@@ -157,6 +157,26 @@ proptest! {
     }
 
     #[test]
+    fn interlocked_pairs_robust(seed in any::<u64>()) {
+        let (p, q) = interlocked_case(seed);
+        check_pair::<Robust>(&p, &q)?;
+    }
+
+    #[test]
+    fn interlocked_pairs_exact(seed in any::<u64>()) {
+        let (p, q) = interlocked_case(seed);
+        check_pair::<Exact>(&p, &q)?;
+    }
+
+    #[test]
+    fn interlocked_pairs_far_from_origin(seed in any::<u64>()) {
+        let (p, q) = interlocked_case(seed);
+        let o = DVec2::new(-1e12, 1e12);
+        let (p, q): (Vec<DVec2>, Vec<DVec2>) = (p.iter().map(|&v| v + o).collect(), q.iter().map(|&v| v + o).collect());
+        check_pair::<Robust>(&p, &q)?;
+    }
+
+    #[test]
     fn random_pairs_far_from_origin(seed in any::<u64>()) {
         let (p, q) = random_case(seed);
         let o = DVec2::new(1e12, -1e12);
@@ -280,6 +300,11 @@ fn fast_kernel_terminates() {
             continue;
         };
         let _ = separation::<Fast>(&sp, &sq);
+        let (p, q) = interlocked_case(seed);
+        let (Ok(sp), Ok(sq)) = (SimplePolygon::try_new(&p), SimplePolygon::try_new(&q)) else {
+            continue;
+        };
+        let _ = separation::<Fast>(&sp, &sq);
     }
 }
 
@@ -330,21 +355,94 @@ fn touching_contained_and_nearly_touching() {
 /// Interlocked shapes (hulls meet, polygons disjoint) are refused with the typed error, not answered
 /// by a brute force.
 #[test]
-fn interlocked_combs_need_the_separator() {
-    let pair = polydist_oracle::interleaved_combs(6, 5, 0.125);
-    let (p, q) = (
-        SimplePolygon::try_new(&pair.a).unwrap(),
-        SimplePolygon::try_new(&pair.b).unwrap(),
-    );
-    assert_eq!(intersection::<Robust>(&p, &q), None);
-    assert_eq!(
-        separation::<Robust>(&p, &q),
-        Err(SeparationError::HullsIntersect)
-    );
-    assert!(matches!(
-        polygon_separation_brute::<Robust>(&p, &q),
-        Ok(PolygonSeparation::Separated { .. })
-    ));
+fn interlocked_combs_go_through_the_separator() {
+    for (teeth, len, gap) in [(6, 5, 0.125), (1, 1, 0.2), (40, 3, 1e-9)] {
+        let pair = polydist_oracle::interleaved_combs(teeth, len, gap);
+        let (p, q) = (
+            SimplePolygon::try_new(&pair.a).unwrap(),
+            SimplePolygon::try_new(&pair.b).unwrap(),
+        );
+        assert_eq!(intersection::<Robust>(&p, &q), None);
+        for (a, b) in [(&p, &q), (&q, &p)] {
+            let Ok(PolygonSeparation::Separated {
+                pair: s,
+                route,
+                stats,
+            }) = separation::<Robust>(a, b)
+            else {
+                panic!("the combs are disjoint")
+            };
+            assert_eq!(route, Route::Separators);
+            assert!(stats.separator_segments >= 1);
+            assert_eq!(s.distance, pair.gap);
+        }
+        check_pair::<Robust>(&pair.a, &pair.b).unwrap();
+        check_pair::<Exact>(&pair.b, &pair.a).unwrap();
+    }
+    for ulps in [1, 4, 1000] {
+        let pair = polydist_oracle::interleaved_combs_ulps(9, 4, ulps);
+        check_pair::<Robust>(&pair.a, &pair.b).unwrap();
+    }
+}
+
+/// Two shapes of the generator families pushed into each other: `Q` scaled by `2^−k` (exact), its
+/// centre put at a random direction and 10 to 70 % of the sum of the radii from `P`'s. Up to 32
+/// placements are drawn; the first whose polygons are disjoint while their hulls meet is returned
+/// (the separator's route, or `HullsIntersect` when one hull contains the other), else the last.
+fn interlocked_case(seed: u64) -> (Vec<DVec2>, Vec<DVec2>) {
+    let mut rng = SplitMix64::new(seed);
+    let n = 4 + rng.index(60);
+    let m = 4 + rng.index(60);
+    let p = shape(&mut rng, n);
+    let q0 = shape(&mut rng, m);
+    let centre = |v: &[DVec2]| {
+        let (lo, hi) = bbox(v);
+        (lo + hi) * 0.5
+    };
+    let radius = |v: &[DVec2], c: DVec2| v.iter().map(|&x| (x - c).length()).fold(0.0, f64::max);
+    let cp = centre(&p);
+    let sp = SimplePolygon::try_new(&p).ok();
+    let mut q = Vec::new();
+    for _ in 0..32 {
+        let scale = 0.5f64.powi(rng.below(4) as i32);
+        let cq = centre(&q0);
+        let t = 0.1 + 0.6 * rng.unit_f64();
+        let ang = core::f64::consts::TAU * rng.unit_f64();
+        let d = DVec2::new(ang.cos(), ang.sin()) * (radius(&p, cp) + scale * radius(&q0, cq)) * t;
+        let shift = cp + d;
+        q = q0.iter().map(|&v| (v - cq) * scale + shift).collect();
+        let (Some(sp), Ok(sq)) = (sp.as_ref(), SimplePolygon::try_new(&q)) else {
+            continue;
+        };
+        let hulls_meet =
+            contact_status_convex(sp.convex_hull().vertices(), sq.convex_hull().vertices())
+                != Contact::Disjoint;
+        if hulls_meet && intersection::<Robust>(sp, &sq).is_none() {
+            break;
+        }
+    }
+    (p, q)
+}
+
+/// The separator route is taken on most disjoint interlocked pairs.
+#[test]
+fn separator_route_is_exercised() {
+    let (mut sep, mut other) = (0, 0);
+    for seed in 0..300 {
+        let (p, q) = interlocked_case(seed);
+        let (Ok(sp), Ok(sq)) = (SimplePolygon::try_new(&p), SimplePolygon::try_new(&q)) else {
+            continue;
+        };
+        match separation::<Robust>(&sp, &sq) {
+            Ok(PolygonSeparation::Separated {
+                route: Route::Separators,
+                ..
+            }) => sep += 1,
+            Ok(PolygonSeparation::Separated { .. }) | Err(_) => other += 1,
+            Ok(PolygonSeparation::Intersecting(_)) => {}
+        }
+    }
+    assert!(sep >= 40, "separator route {sep}, other {other}");
 }
 
 /// Caller indices: a ring given clockwise, closed, with repeated and collinear vertices.
