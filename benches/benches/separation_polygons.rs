@@ -9,7 +9,9 @@
 //!   the hull shortcut);
 //! - `polygons/interlocked_combs`: two combs whose teeth interleave, clearance 1/8: the hulls meet,
 //!   so the query goes through Amato's separator (triangulation of the region between the facing
-//!   chains, geodesic, extensions, greedy pruning, subchains).
+//!   chains, geodesic, extensions, greedy pruning, subchains). Every clearance ties exactly;
+//! - `polygons/interlocked_combs_jittered`: the same combs with every vertex moved by a random dyadic
+//!   amount below 1/64 in x and y (clearances between 1/8 − 1/32 and 1/8 + 1/32, no exact ties).
 //!
 //! Series, per `N`:
 //! - `validate`: building both `SimplePolygon`s (exact simplicity sweep), which a caller does once;
@@ -106,6 +108,26 @@ fn combs(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
 fn interlocked_combs(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
     let pair = polydist_oracle::interleaved_combs((n / 8).max(1), 5, 0.125);
     (pair.a, pair.b)
+}
+
+/// [`interlocked_combs`] with every vertex moved by a random multiple of `2^−12` below `1/64` in
+/// each coordinate: still simple and disjoint (edges are at least 1 long, clearances stay above
+/// 1/8 − 1/32), but no two clearances tie.
+fn interlocked_combs_jittered(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
+    let (a, b) = interlocked_combs(n);
+    let mut rng = SplitMix64::new(0x1177 ^ n as u64);
+    let mut jitter = |v: &[DVec2]| -> Vec<DVec2> {
+        v.iter()
+            .map(|&x| {
+                let d = DVec2::new(
+                    rng.range_i64(-63, 64) as f64,
+                    rng.range_i64(-63, 64) as f64,
+                );
+                x + d * 2f64.powi(-12)
+            })
+            .collect()
+    };
+    (jitter(&a), jitter(&b))
 }
 
 /// A slab `[0, 4] × [0, h]` with `t` saw teeth on its right side (tips at `x = 5`), and its mirror
@@ -237,6 +259,7 @@ fn benches() {
     run(&mut c, "polygons/combs", combs);
     run(&mut c, "polygons/sawteeth", sawteeth);
     run(&mut c, "polygons/interlocked_combs", interlocked_combs);
+    run(&mut c, "polygons/interlocked_combs_jittered", interlocked_combs_jittered);
     c.final_summary();
 }
 
