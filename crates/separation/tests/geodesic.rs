@@ -625,3 +625,57 @@ proptest! {
         }
     }
 }
+
+/// The region between two interleaved combs (the separator's R when the hulls meet): comb `a`'s
+/// upper boundary left to right, then comb `b`'s lower boundary right to left, closed by two
+/// vertical bridges. Returns the ring and the index of the last vertex of `a`'s part.
+fn comb_corridor(n_teeth: usize, tooth_len: u32, ulps: Option<u64>) -> (Vec<DVec2>, usize) {
+    let pair = match ulps {
+        Some(u) => polydist_oracle::interleaved_combs_ulps(n_teeth, tooth_len, u),
+        None => polydist_oracle::interleaved_combs(n_teeth, tooth_len, 0.125),
+    };
+    let mut ring: Vec<DVec2> = pair.a[2..].iter().rev().copied().collect();
+    let last_a = ring.len() - 1;
+    ring.extend(pair.b[2..].iter().rev());
+    (ring, last_a)
+}
+
+#[test]
+fn corridor_between_interleaved_combs() {
+    for (n_teeth, len, ulps) in [
+        (1, 1, None),
+        (3, 2, None),
+        (6, 3, None),
+        (4, 2, Some(1)),
+        (5, 3, Some(3)),
+    ] {
+        let (ring, last_a) = comb_corridor(n_teeth, len, ulps);
+        for (name, ring) in [
+            (format!("corridor {n_teeth}x{len} {ulps:?}"), ring.clone()),
+            (
+                format!("corridor {n_teeth}x{len} {ulps:?} +1e12"),
+                offset(&ring, 1e12, 1e12).unwrap_or_else(|| ring.clone()),
+            ),
+        ] {
+            let tri = triangulate::<Robust>(&ring).unwrap_or_else(|e| panic!("{name}: {e}"));
+            full_check::<Robust>(&name, &ring, &tri);
+            // The geodesic from one end of a's side to the other winds through every tooth gap.
+            let p = shortest_path::<Robust>(&tri, &ring, 0, last_a);
+            let b = shortest_path_brute::<Robust>(&ring, 0, last_a);
+            assert_eq!(p, b, "{name}");
+            assert!(p.len() >= 2 + 2 * n_teeth, "{name}: {p:?}");
+            for w in p.windows(2) {
+                for (f, t) in [(w[0], w[1]), (w[1], w[0])] {
+                    assert_eq!(
+                        first_hit::<Robust>(&tri, &ring, f, t),
+                        first_hit_brute::<Robust>(&ring, f, t),
+                        "{name}: arm {f}->{t}"
+                    );
+                }
+            }
+            if ring.len() <= 40 {
+                check_hits(&name, &ring, &tri);
+            }
+        }
+    }
+}
