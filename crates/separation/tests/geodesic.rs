@@ -685,3 +685,30 @@ fn corridor_between_interleaved_combs() {
         }
     }
 }
+
+/// Junk rings (random point sequences, mostly self-crossing): an error or a structurally valid
+/// triangulation, never a panic or a hang, under Robust and Fast.
+#[test]
+fn junk_rings_never_panic() {
+    let mut rng = SplitMix64::new(2024);
+    let (mut ok, mut err) = (0, 0);
+    for _ in 0..3000 {
+        let n = 3 + rng.index(12);
+        let ring: Vec<DVec2> = (0..n)
+            .map(|_| DVec2::new(rng.range_i64(-4, 4) as f64, rng.range_i64(-4, 4) as f64))
+            .collect();
+        match triangulate::<Robust>(&ring) {
+            Ok(t) => {
+                ok += 1;
+                assert_eq!(t.check::<Robust>(&ring), Ok(()));
+                let _ = shortest_path::<Robust>(&t, &ring, 0, n - 1);
+                let _ = first_hit::<Robust>(&t, &ring, 0, n - 1);
+            }
+            Err(_) => err += 1,
+        }
+        let _ = triangulate::<Fast>(&ring);
+        let _ = triangulate_brute::<Robust>(&ring);
+    }
+    println!("junk rings: {ok} triangulated, {err} refused");
+    assert!(ok > 0 && err > 0, "ok {ok}, err {err}");
+}
