@@ -3,8 +3,8 @@
 //!
 //! - `triangulate/{combs,stars,spirals}`: `triangulate::<K>` for the three kernels, and
 //!   `triangulate_brute::<Robust>` (ear clipping, `O(n³)` worst case; up to 512 vertices);
-//! - `geodesic/{combs,stars,spirals}`: `shortest_path::<Robust>` between vertices `0` and `n/2` on a
-//!   prebuilt triangulation, and `first_hit::<Robust>` for every segment of that path (both ways).
+//! - `geodesic/{combs,stars,spirals}`: `shortest_path::<Robust>` on a prebuilt triangulation between
+//!   the pair with the most turns among `(0, n/2)`, `(1, n−2)`, `(n/3, 2n/3)`, `(n/4, 3n/4)`, and `first_hit::<Robust>` for every segment of that path (both ways).
 //!
 //! Combs have all tips on one line (collinear vertices everywhere). Run:
 //! `cargo bench -p polydist-benches --bench triangulate -- --warm-up-time 1 --measurement-time 2`.
@@ -41,7 +41,7 @@ fn families(n: usize) -> [(&'static str, Vec<DVec2>); 3] {
 fn benches() {
     let mut c = Criterion::default().configure_from_args();
     for family in 0..3 {
-        let name = families(8)[family].0;
+        let name = ["combs", "stars", "spirals"][family];
         let mut group = c.benchmark_group(format!("triangulate/{name}"));
         configure(&mut group);
         for n in SIZES {
@@ -71,10 +71,21 @@ fn benches() {
             let Ok(tri) = triangulate::<Robust>(&ring) else {
                 continue;
             };
+            // The pair with the most turns among a few candidates (a trivial pair measures nothing).
+            let (s, t) = [
+                (0, m / 2),
+                (1, m - 2),
+                (m / 3, 2 * m / 3),
+                (m / 4, 3 * m / 4),
+            ]
+            .into_iter()
+            .max_by_key(|&(s, t)| shortest_path::<Robust>(&tri, &ring, s, t).len())
+            .unwrap_or((0, m / 2));
             group.bench_with_input(BenchmarkId::new("shortest_path", m), &ring, |b, r| {
-                b.iter(|| shortest_path::<Robust>(&tri, black_box(r), 0, m / 2))
+                b.iter(|| shortest_path::<Robust>(&tri, black_box(r), s, t))
             });
-            let path = shortest_path::<Robust>(&tri, &ring, 0, m / 2);
+            let path = shortest_path::<Robust>(&tri, &ring, s, t);
+            println!("{name} n={m}: path {s}->{t} has {} vertices", path.len());
             group.bench_with_input(BenchmarkId::new("arms", m), &ring, |b, r| {
                 b.iter(|| {
                     path.windows(2)

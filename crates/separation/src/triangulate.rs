@@ -81,6 +81,12 @@ pub enum TriangulationError {
         /// The number of vertices given.
         count: usize,
     },
+    /// More vertices than `u32` triangle indices can address (`2^31`).
+    #[error("{count} vertices are more than 2^31")]
+    TooManyVertices {
+        /// The number of vertices given.
+        count: usize,
+    },
     /// A coordinate is NaN, infinite or beyond `2^500` in magnitude.
     #[error("vertex {index} has a coordinate that is not finite or beyond 2^500")]
     InvalidCoordinate {
@@ -287,7 +293,7 @@ fn validate<K: Kernel>(ring: &[DVec2]) -> Result<Vec<usize>, TriangulationError>
         return Err(TriangulationError::TooFewVertices { count: n });
     }
     if n > u32::MAX as usize / 2 {
-        return Err(TriangulationError::TooFewVertices { count: n });
+        return Err(TriangulationError::TooManyVertices { count: n });
     }
     if let Some(index) = ring
         .iter()
@@ -329,7 +335,7 @@ fn validate<K: Kernel>(ring: &[DVec2]) -> Result<Vec<usize>, TriangulationError>
 /// `O(n)` space.
 ///
 /// # Errors
-/// [`TriangulationError`]: fewer than 3 vertices, a bad coordinate, a repeated vertex, overlapping
+/// [`TriangulationError`]: fewer than 3 vertices (or more than `2^31`), a bad coordinate, a repeated vertex, overlapping
 /// edges, a clockwise ring, or an inconsistency (a polygon that is not simple, or the Fast kernel's
 /// inconsistent signs). Never panics, always terminates, under every kernel.
 ///

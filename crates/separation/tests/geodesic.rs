@@ -92,6 +92,105 @@ fn lattice_star(rng: &mut SplitMix64, n: usize, r: i64) -> Option<Vec<DVec2>> {
     )
 }
 
+/// A random polyomino on a `k × k` grid (4-connected cells, no hole, no two cells touching only
+/// at a corner, so the boundary is strictly simple), traced counter-clockwise with every unit lattice
+/// point of the boundary a vertex, then about half of the 180° corners dropped at random: runs of
+/// collinear vertices everywhere, all vertices on a lattice.
+fn polyomino(rng: &mut SplitMix64, k: usize, cells: usize) -> Vec<DVec2> {
+    let k = k.max(2) as i64;
+    let mut filled = std::collections::HashSet::new();
+    filled.insert((k / 2, k / 2));
+    let ok = |f: &std::collections::HashSet<(i64, i64)>| {
+        // No pinch: no 2×2 block with exactly the two diagonal cells filled.
+        for x in -1..=k {
+            for y in -1..=k {
+                let c = [(x, y), (x + 1, y), (x, y + 1), (x + 1, y + 1)].map(|c| f.contains(&c));
+                if (c[0] && c[3] && !c[1] && !c[2]) || (c[1] && c[2] && !c[0] && !c[3]) {
+                    return false;
+                }
+            }
+        }
+        // No hole: the empty cells of the padded grid are 4-connected.
+        let mut seen = std::collections::HashSet::new();
+        let mut stack = vec![(-1, -1)];
+        seen.insert((-1, -1));
+        while let Some((x, y)) = stack.pop() {
+            for d in [(1, 0), (-1, 0), (0, 1), (0, -1)] {
+                let c = (x + d.0, y + d.1);
+                if (-1..=k).contains(&c.0)
+                    && (-1..=k).contains(&c.1)
+                    && !f.contains(&c)
+                    && seen.insert(c)
+                {
+                    stack.push(c);
+                }
+            }
+        }
+        seen.len() + f.len() == ((k + 2) * (k + 2)) as usize
+    };
+    for _ in 0..cells * 20 {
+        if filled.len() >= cells {
+            break;
+        }
+        let all: Vec<(i64, i64)> = filled.iter().copied().collect();
+        let mut all = all;
+        all.sort_unstable();
+        let c = all[rng.index(all.len())];
+        let d = [(1, 0), (-1, 0), (0, 1), (0, -1)][rng.index(4)];
+        let nc = (c.0 + d.0, c.1 + d.1);
+        if !(0..k).contains(&nc.0) || !(0..k).contains(&nc.1) || filled.contains(&nc) {
+            continue;
+        }
+        filled.insert(nc);
+        if !ok(&filled) {
+            filled.remove(&nc);
+        }
+    }
+    // Unit boundary edges, counter-clockwise around each filled cell where the neighbour is empty.
+    let mut next = std::collections::HashMap::new();
+    for &(x, y) in &filled {
+        let empty = |dx: i64, dy: i64| !filled.contains(&(x + dx, y + dy));
+        if empty(0, -1) {
+            next.insert((x, y), (x + 1, y));
+        }
+        if empty(1, 0) {
+            next.insert((x + 1, y), (x + 1, y + 1));
+        }
+        if empty(0, 1) {
+            next.insert((x + 1, y + 1), (x, y + 1));
+        }
+        if empty(-1, 0) {
+            next.insert((x, y + 1), (x, y));
+        }
+    }
+    let start = *next.keys().min().unwrap_or(&(0, 0));
+    let mut ring = vec![start];
+    let mut cur = next[&start];
+    while cur != start {
+        ring.push(cur);
+        cur = next[&cur];
+    }
+    assert_eq!(ring.len(), next.len(), "one boundary cycle");
+    // Drop about half of the 180° corners.
+    let mut out: Vec<(i64, i64)> = Vec::new();
+    let m = ring.len();
+    for i in 0..m {
+        let (a, b, c) = (
+            out.last().copied().unwrap_or(ring[(i + m - 1) % m]),
+            ring[i],
+            ring[(i + 1) % m],
+        );
+        let straight = (b.0 - a.0) * (c.1 - b.1) - (b.1 - a.1) * (c.0 - b.0) == 0;
+        if straight && i > 0 && rng.coin() {
+            continue;
+        }
+        out.push(b);
+    }
+    out.into_iter()
+        .map(|(x, y)| DVec2::new(x as f64, y as f64))
+        .collect()
+}
+
 /// A square `[0, k] × [0, k]` with all `4k` lattice points of its sides as vertices.
 fn dense_square(k: usize) -> Vec<DVec2> {
     let k = k as f64;
@@ -149,6 +248,14 @@ fn family(rng: &mut SplitMix64, n: usize) -> Vec<(String, Vec<DVec2>)> {
         ("star".to_string(), star(rng, n, n / 3)),
         ("two-opt".to_string(), two_opt(rng, n.min(60))),
         ("spiral".to_string(), spiral(4 + (n % 5) as u32, 2)),
+        (
+            "polyomino".to_string(),
+            polyomino(rng, n / 4 + 2, n / 2 + 1),
+        ),
+        (
+            "polyomino-big".to_string(),
+            polyomino(rng, n / 2 + 2, n + 1),
+        ),
     ];
     for _ in 0..20 {
         if let Some(p) = lattice_star(rng, n, 4) {
@@ -325,6 +432,7 @@ fn every_family_triangulates_exactly() {
     for n in [4usize, 7, 12, 25, 60, 130] {
         for (name, ring) in family(&mut rng, n) {
             let name = format!("{name} n={n}");
+            println!("{name}: {} vertices", ring.len());
             let t = triangulate::<Robust>(&ring).unwrap_or_else(|e| panic!("{name}: {e}"));
             full_check::<Robust>(&name, &ring, &t);
             if ring.len() <= 70 {
@@ -484,16 +592,23 @@ proptest! {
     #![proptest_config(ProptestConfig::with_cases(48))]
 
     #[test]
-    fn random_polygons_agree(seed in any::<u64>(), n in 3usize..24, which in 0usize..4) {
+    fn random_polygons_agree(seed in any::<u64>(), n in 3usize..24, which in 0usize..5) {
         let mut rng = SplitMix64::new(seed);
         let ring = match which {
             0 => two_opt(&mut rng, n),
             1 => star(&mut rng, n, n / 2),
             2 => histogram(&mut rng, n / 2 + 1, seed % 2 == 0),
+            3 => polyomino(&mut rng, n / 3 + 2, n),
             _ => match lattice_star(&mut rng, n + 3, 3) {
                 Some(p) => p,
                 None => return Ok(()),
             },
+        };
+        // A third of the cases far from the origin (exact translation; skipped when not exact).
+        let ring = if seed % 3 == 0 {
+            offset(&ring, 1e12, -1e12).unwrap_or(ring)
+        } else {
+            ring
         };
         let tri = triangulate::<Robust>(&ring).unwrap();
         full_check::<Robust>("prop", &ring, &tri);
@@ -515,4 +630,85 @@ proptest! {
             );
         }
     }
+}
+
+/// The region between two interleaved combs (the separator's R when the hulls meet): comb `a`'s
+/// upper boundary left to right, then comb `b`'s lower boundary right to left, closed by two
+/// vertical bridges. Returns the ring and the index of the last vertex of `a`'s part.
+fn comb_corridor(n_teeth: usize, tooth_len: u32, ulps: Option<u64>) -> (Vec<DVec2>, usize) {
+    let pair = match ulps {
+        Some(u) => polydist_oracle::interleaved_combs_ulps(n_teeth, tooth_len, u),
+        None => polydist_oracle::interleaved_combs(n_teeth, tooth_len, 0.125),
+    };
+    let mut ring: Vec<DVec2> = pair.a[2..].iter().rev().copied().collect();
+    let last_a = ring.len() - 1;
+    ring.extend(pair.b[2..].iter().rev());
+    (ring, last_a)
+}
+
+#[test]
+fn corridor_between_interleaved_combs() {
+    for (n_teeth, len, ulps) in [
+        (1, 1, None),
+        (3, 2, None),
+        (6, 3, None),
+        (4, 2, Some(1)),
+        (5, 3, Some(3)),
+    ] {
+        let (ring, last_a) = comb_corridor(n_teeth, len, ulps);
+        for (name, ring) in [
+            (format!("corridor {n_teeth}x{len} {ulps:?}"), ring.clone()),
+            (
+                format!("corridor {n_teeth}x{len} {ulps:?} +1e12"),
+                offset(&ring, 1e12, 1e12).unwrap_or_else(|| ring.clone()),
+            ),
+        ] {
+            let tri = triangulate::<Robust>(&ring).unwrap_or_else(|e| panic!("{name}: {e}"));
+            full_check::<Robust>(&name, &ring, &tri);
+            // The geodesic from one end of a's side to the other winds through every tooth gap.
+            let p = shortest_path::<Robust>(&tri, &ring, 0, last_a);
+            let b = shortest_path_brute::<Robust>(&ring, 0, last_a);
+            assert_eq!(p, b, "{name}");
+            assert!(p.len() >= 2 + 2 * n_teeth, "{name}: {p:?}");
+            for w in p.windows(2) {
+                for (f, t) in [(w[0], w[1]), (w[1], w[0])] {
+                    assert_eq!(
+                        first_hit::<Robust>(&tri, &ring, f, t),
+                        first_hit_brute::<Robust>(&ring, f, t),
+                        "{name}: arm {f}->{t}"
+                    );
+                }
+            }
+            if ring.len() <= 40 {
+                check_hits(&name, &ring, &tri);
+            }
+        }
+    }
+}
+
+/// Junk rings (random point sequences, mostly self-crossing): an error or a structurally valid
+/// triangulation, never a panic or a hang, under Robust and Fast.
+#[test]
+fn junk_rings_never_panic() {
+    let mut rng = SplitMix64::new(2024);
+    let (mut ok, mut err) = (0, 0);
+    for _ in 0..3000 {
+        let n = 3 + rng.index(12);
+        let ring: Vec<DVec2> = (0..n)
+            .map(|_| DVec2::new(rng.range_i64(-4, 4) as f64, rng.range_i64(-4, 4) as f64))
+            .collect();
+        match triangulate::<Robust>(&ring) {
+            Ok(t) => {
+                ok += 1;
+                assert_eq!(t.check::<Robust>(&ring), Ok(()));
+                let _ = shortest_path::<Robust>(&t, &ring, 0, n - 1);
+                let _ = first_hit::<Robust>(&t, &ring, 0, n - 1);
+            }
+            Err(_) => err += 1,
+        }
+        let _ = triangulate::<Fast>(&ring);
+        let _ = triangulate_brute::<Robust>(&ring);
+    }
+    println!("junk rings: {ok} triangulated, {err} refused");
+    assert!(ok > 0 && err > 0, "ok {ok}, err {err}");
 }
