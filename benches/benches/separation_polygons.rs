@@ -119,10 +119,7 @@ fn interlocked_combs_jittered(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
     let mut jitter = |v: &[DVec2]| -> Vec<DVec2> {
         v.iter()
             .map(|&x| {
-                let d = DVec2::new(
-                    rng.range_i64(-63, 64) as f64,
-                    rng.range_i64(-63, 64) as f64,
-                );
+                let d = DVec2::new(rng.range_i64(-63, 64) as f64, rng.range_i64(-63, 64) as f64);
                 x + d * 2f64.powi(-12)
             })
             .collect()
@@ -259,7 +256,11 @@ fn benches() {
     run(&mut c, "polygons/combs", combs);
     run(&mut c, "polygons/sawteeth", sawteeth);
     run(&mut c, "polygons/interlocked_combs", interlocked_combs);
-    run(&mut c, "polygons/interlocked_combs_jittered", interlocked_combs_jittered);
+    run(
+        &mut c,
+        "polygons/interlocked_combs_jittered",
+        interlocked_combs_jittered,
+    );
     c.final_summary();
 }
 
