@@ -240,6 +240,11 @@ fn merge_collinear<K: Kernel>(ring: &[DVec2], path: &[usize]) -> Vec<usize> {
 /// `sign((a − w) × (w − f))`: positive when the ray direction `w − f` is counter-clockwise of
 /// the direction `w → a`.
 fn dir_cross<K: Kernel>(w: DVec2, a: DVec2, f: DVec2) -> Sign {
+    // `a == f` (the corner is the segment's own start, common: the run is often a triangulation
+    // side) is an exact zero, which the Robust filter cannot certify without exact arithmetic.
+    if a == f {
+        return Sign::Zero;
+    }
     K::cross_sign(w, a, f, w)
 }
 
