@@ -561,12 +561,28 @@ pub(crate) fn solve<K: Kernel>(
         stats.subproblem_vertices += pcv.len() + qcv.len();
         let s = &b.runs[b.kept[i]];
         let (a, c) = (r.ring[s.lo], r.ring[s.hi]);
-        let pair = match separation_of_chains::<K>(&pcv, &qcv, a, c) {
-            Ok(sep) => {
+        // Both subchains hold a vertex defining the line (known from the indices): section 3 would
+        // reject it (`BothChainsTouchLine`) after its exact side tests, so skip the attempt.
+        let holds = |v: usize| {
+            if r.is_p(v) {
+                (plo..=phi).contains(&r.pos_p(v))
+            } else {
+                (qlo..=qhi).contains(&v)
+            }
+        };
+        let both_touch = [s.lo, s.hi].iter().any(|&v| r.is_p(v) && holds(v))
+            && [s.lo, s.hi].iter().any(|&v| !r.is_p(v) && holds(v));
+        let section3 = if both_touch {
+            None
+        } else {
+            separation_of_chains::<K>(&pcv, &qcv, a, c).ok()
+        };
+        let pair = match section3 {
+            Some(sep) => {
                 stats.subproblems_section3 += 1;
                 sep.pair
             }
-            Err(_) => {
+            None => {
                 stats.subproblems_scanned += 1;
                 separation_brute::<K>(&pcv, &qcv)?
             }
