@@ -303,6 +303,31 @@ fn fmt_ns(ns: f64) -> String {
     }
 }
 
+/// Writes one Markdown table of the report: a header, then one line per row (the failures column
+/// says `not asserted` for Fast, whose wrong answers the suite only records).
+fn table(md: &mut String, rows: &[Row]) {
+    md.push_str("| algorithm | kernel | time, random | time, hard | worst error (ulps) | wrong | failures |\n");
+    md.push_str("|---|---|--:|--:|--:|--:|--:|\n");
+    for r in rows {
+        let _ = writeln!(
+            md,
+            "| {} | {} | {} | {} | {:.2} | {} of {} | {} |",
+            r.name,
+            r.kernel,
+            fmt_ns(r.random_ns),
+            fmt_ns(r.hard_ns),
+            r.max_ulps,
+            r.wrong,
+            r.cases,
+            if r.kernel == "Fast" {
+                "not asserted".to_owned()
+            } else {
+                r.wrong.to_string()
+            }
+        );
+    }
+}
+
 /// The chart: time per query on the hard suite (log x) against the worst error in ulps (log y; 0 is
 /// drawn on the bottom line), one point per algorithm × kernel, drawn by hand.
 fn svg(rows: &[Row]) -> String {
@@ -494,26 +519,7 @@ fn main() {
         hard.len(),
         std::thread::available_parallelism().map_or(1, usize::from),
     );
-    md.push_str("| algorithm | kernel | time, random | time, hard | worst error (ulps) | wrong | failures |\n");
-    md.push_str("|---|---|--:|--:|--:|--:|--:|\n");
-    for r in &rows {
-        let _ = writeln!(
-            md,
-            "| {} | {} | {} | {} | {:.2} | {} of {} | {} |",
-            r.name,
-            r.kernel,
-            fmt_ns(r.random_ns),
-            fmt_ns(r.hard_ns),
-            r.max_ulps,
-            r.wrong,
-            r.cases,
-            if r.kernel == "Fast" {
-                "not asserted".to_owned()
-            } else {
-                r.wrong.to_string()
-            }
-        );
-    }
+    table(&mut md, &rows);
     let _ = writeln!(
         md,
         "\nSimple polygons (convex hulls disjoint; pairs whose hulls meet need Amato's separators, not \
@@ -522,26 +528,7 @@ fn main() {
          facing tip to notch). The time includes the intersection check.\n",
         shard.len()
     );
-    md.push_str("| algorithm | kernel | time, random | time, hard | worst error (ulps) | wrong | failures |\n");
-    md.push_str("|---|---|--:|--:|--:|--:|--:|\n");
-    for r in &srows {
-        let _ = writeln!(
-            md,
-            "| {} | {} | {} | {} | {:.2} | {} of {} | {} |",
-            r.name,
-            r.kernel,
-            fmt_ns(r.random_ns),
-            fmt_ns(r.hard_ns),
-            r.max_ulps,
-            r.wrong,
-            r.cases,
-            if r.kernel == "Fast" {
-                "not asserted".to_owned()
-            } else {
-                r.wrong.to_string()
-            }
-        );
-    }
+    table(&mut md, &srows);
     md.push_str(
         "\n![time against worst error, one point per algorithm and kernel](accuracy.svg)\n\n",
     );
