@@ -147,8 +147,9 @@ fn eval<K: Kernel>(
         }
         Alg::Cmmr => {
             let c = black_box(cmmr_with::<K>(p, q));
-            a.map(|a| Verdict {
-                ulps: polydist_oracle::ulps_error(c.value, &a.cmmr),
+            // No exact CMMR is stored for the large cases: nothing to judge there.
+            a.and_then(|a| a.cmmr.as_ref()).map(|exact| Verdict {
+                ulps: polydist_oracle::ulps_error(c.value, exact),
                 right: true,
             })
         }

@@ -68,6 +68,8 @@ mod exact;
 mod generators;
 mod hard;
 mod hausdorff;
+mod large;
+mod pruned;
 mod rounding;
 mod separation;
 mod shape;
@@ -99,6 +101,11 @@ pub use crate::hard::{HardAnswers, SimpleHardAnswers};
 pub use crate::hausdorff::{
     cmmr, directed_hausdorff_filled, hausdorff_filled, per_vertex_sq_dist,
     sq_dist_point_filled_convex,
+};
+pub use crate::large::{cocircular_arc, dense_circle, fingerprint, large_pair, large_pair_from};
+pub use crate::pruned::{
+    boundary_distance_pruned, directed_hausdorff_disjoint_pruned, filled_distance_pruned,
+    min_vertex_distance_pruned,
 };
 pub use crate::rounding::{
     sqrt_nearest, step_ulps, to_f64_nearest, ulp_distance, ulps_error, ulps_error_sqrt,
