@@ -345,6 +345,8 @@ fn main() {
         case(&mut out, "identical", &format!("{k}"), &pair.p, &pair.p);
     }
 
+    fast_hurting(&mut out, &mut rng);
+
     write("convex.txt", &out);
     write("simple.txt", &simple_cases());
     let (large_convex, large_simple) = large_cases();
@@ -445,6 +447,138 @@ fn large_cases() -> (String, String) {
         );
     }
     (convex, simple)
+}
+
+/// `(g, x, y)` with `g = gcd(a, b) = a·x + b·y` (extended Euclid, `i128`).
+fn ext_gcd(a: i128, b: i128) -> (i128, i128, i128) {
+    if b == 0 {
+        (a, 1, 0)
+    } else {
+        let (g, x, y) = ext_gcd(b, a % b);
+        (g, y, x - (a / b) * y)
+    }
+}
+
+/// An integer vector `w` with `cross(d, w) = k` exactly (`d` primitive), shifted along `d` so that
+/// its projection on `d` is about `t·|d|²`.
+fn at_cross(d: (i128, i128), k: i128, t: f64) -> (i128, i128) {
+    // cross(d, w) = d.0·w.1 − d.1·w.0 = 1 for w = (−y, x) with d.0·x + d.1·y = 1.
+    let (g, x, y) = ext_gcd(d.0, d.1);
+    assert!(g.abs() == 1, "direction not primitive");
+    let w0 = (-y * g * k, x * g * k);
+    let dd = (d.0 * d.0 + d.1 * d.1) as f64;
+    let along = (w0.0 * d.0 + w0.1 * d.1) as f64 / dd;
+    let shift = (t - along).round() as i128;
+    (w0.0 + shift * d.0, w0.1 + shift * d.1)
+}
+
+fn world(v: (i128, i128)) -> DVec2 {
+    assert!(v.0.abs() < 1 << 53 && v.1.abs() < 1 << 53, "not exact");
+    DVec2::new(v.0 as f64, v.1 as f64)
+}
+
+/// Families built to defeat plain `f64` predicates (issue 8: measure the Fast kernel where it
+/// hurts), every answer from the exact oracle as for the others:
+///
+/// - `orient_1_far`: a vertex `w` of Q at orientation exactly `k ∈ {−3, −1, 0, 1, 3}` (in units of
+///   the integer grid) against a long edge `ab = 16·d` of P (`d` a primitive integer vector, `|b − a| ≈ 2^47`),
+///   all near `(1e15, 1e15)`: `w` is `|k|/|d| ≈ 2^−43` off the edge's line (far below an ulp of the coordinates,
+///   0.125), on the outside (disjoint), on it (touching) or inside (overlapping), while a plain
+///   `f64` cross product of those differences rounds by about `2^42`.
+/// - `near_parallel_far`: Q's facing edge `cd` with its ends at orientations `(k_c, k_d)` against
+///   P's long edge: nearly parallel edges whose nearer end is decided by a difference of
+///   `1/|d|`.
+/// - `cocircular_1e12`: the co-circular lattice sets scaled by `10^12` (exact integers, no longer
+///   short significands, so `f64` squares round), and one vertex moved one ulp in or out.
+fn fast_hurting(out: &mut String, rng: &mut SplitMix64) {
+    for case_k in 0..5 {
+        // A primitive direction with ~47-bit components, a base point near (1e15, 1e15).
+        let d = loop {
+            let d = (
+                i128::from(rng.range_i64(1 << 42, 1 << 43)),
+                i128::from(rng.range_i64(-(1 << 43), 1 << 43)),
+            );
+            if ext_gcd(d.0, d.1).0.abs() == 1 {
+                break d;
+            }
+        };
+        let a = (
+            1_000_000_000_000_000 + i128::from(rng.range_i64(0, 1 << 30)),
+            1_000_000_000_000_000 + i128::from(rng.range_i64(0, 1 << 30)),
+        );
+        // The edge ab is M·d: the integer points at orientation k against the line (spaced by d)
+        // fall M times along the edge.
+        let m = 16;
+        let b = (a.0 + m * d.0, a.1 + m * d.1);
+        // P: a, b, then a far vertex on the left of ab (ccw), well inside the exact range.
+        let left = (-d.1 * m / 2, d.0 * m / 2);
+        let c = (a.0 + d.0 * m / 2 + left.0, a.1 + d.1 * m / 2 + left.1);
+        let right = (d.1 * m / 4, -d.0 * m / 4);
+        let p = vec![world(a), world(b), world(c)];
+        for k in [-3i128, -1, 0, 1, 3] {
+            // cross(b − a, w − a) = k: k < 0 is the right side of ab, outside P.
+            let w = at_cross(d, k, (0.3 + 0.1 * case_k as f64) * m as f64);
+            let w = (a.0 + w.0, a.1 + w.1);
+            let q = vec![
+                world(w),
+                world((w.0 + right.0 - d.0 * m / 8, w.1 + right.1 - d.1 * m / 8)),
+                world((w.0 + right.0 + d.0 * m / 8, w.1 + right.1 + d.1 * m / 8)),
+            ];
+            let q = if sign_orient(q[0], q[1], q[2]) == std::cmp::Ordering::Less {
+                vec![q[0], q[2], q[1]]
+            } else {
+                q
+            };
+            if polydist_oracle::is_strictly_convex(&p) && polydist_oracle::is_strictly_convex(&q) {
+                case(out, "orient_1_far", &format!("{case_k}_k{k}"), &p, &q);
+            }
+        }
+        // Nearly parallel facing edges: c at orientation kc, d at kd against ab (both outside).
+        for (kc, kd) in [(-1i128, -2i128), (-2, -1), (-1, -1), (-3, -2)] {
+            let wc = at_cross(d, kc, 0.65 * m as f64);
+            let wd = at_cross(d, kd, 0.35 * m as f64);
+            let (qc, qd) = ((a.0 + wc.0, a.1 + wc.1), (a.0 + wd.0, a.1 + wd.1));
+            let e = ((qc.0 + qd.0) / 2 + right.0, (qc.1 + qd.1) / 2 + right.1);
+            let q = vec![world(qc), world(qd), world(e)];
+            let q = if sign_orient(q[0], q[1], q[2]) == std::cmp::Ordering::Less {
+                vec![q[0], q[2], q[1]]
+            } else {
+                q
+            };
+            if polydist_oracle::is_strictly_convex(&q) {
+                case(
+                    out,
+                    "near_parallel_far",
+                    &format!("{case_k}_{kc}_{kd}"),
+                    &p,
+                    &q,
+                );
+            }
+        }
+    }
+    // Co-circular sets scaled by 10^12 (exact: integers below 2^53), ties exact or broken by one
+    // ulp of the scaled coordinates.
+    for k in [1u32, 2, 3] {
+        let (r, s) = (5f64.powi(k as i32), 1e12);
+        let arc: Vec<DVec2> = cocircular(k)
+            .into_iter()
+            .filter(|v| v.x > r / 2.0)
+            .map(|v| v * s)
+            .collect();
+        let q = vec![
+            DVec2::ZERO,
+            DVec2::new(-r * s, r * s),
+            DVec2::new(-r * s, -r * s),
+        ];
+        let mid = arc.len() / 2;
+        for steps in [0i64, -1, 1] {
+            let mut p = arc.clone();
+            p[mid].x = step_ulps(p[mid].x, steps);
+            if p.len() >= 3 && polydist_oracle::is_convex(&p) {
+                case(out, "cocircular_1e12", &format!("k{k}_{steps}"), &p, &q);
+            }
+        }
+    }
 }
 
 /// The pair of a `gen` spec, and the spec with its fingerprint appended.
