@@ -2,6 +2,10 @@
 //! oracle's seeded generators, each with its exact answers computed by this crate (the independent
 //! exact rational brute force), never by an algorithm under test.
 //!
+//! Also writes `fixtures/hard/simple.txt` (simple polygons, hulls disjoint) and the large pairs,
+//! `large_convex.txt` and `large_simple.txt` (10⁴–10⁵ vertices, stored as a `gen` line that
+//! `polydist_oracle::large_pair` rebuilds, answers from the oracle's pruned exact search).
+//!
 //! Run from the workspace root: `cargo run -p polydist-oracle --example gen_hard --release`.
 //! The output is deterministic (fixed seeds, shortest round-trip decimals); the file is committed
 //! and read by `polydist_fixtures::hard`.
