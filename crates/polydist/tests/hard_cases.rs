@@ -160,7 +160,11 @@ fn polygons(c: &HardCase) -> (Vec<DVec2>, Vec<DVec2>) {
 #[test]
 fn every_convex_algorithm_on_every_hard_case() {
     let cases = hard_cases("hard/convex.txt").expect("fixtures/hard/convex.txt");
-    assert!(cases.len() >= 170, "the suite shrank: {} cases", cases.len());
+    assert!(
+        cases.len() >= 170,
+        "the suite shrank: {} cases",
+        cases.len()
+    );
     convex_suite(&cases);
 }
 
