@@ -757,9 +757,10 @@ fn main() {
          overlapping) are an exact optimum on every hard case above — and its cost over Fast is \
          small on ordinary inputs ({:.1}–{:.1}× on the random convex pairs: compare the two rows \
          of each algorithm) because the searches are guided in plain `f64` and only certified \
-         exactly. Where nearly every decision is an exact tie the filter fails and the exact \
-         fallback runs each time: on the large pairs (co-circular arcs, parallel facing edges) \
-         the factor reaches {:.0}× ({}). The reported distances are constructed once from the \
+         exactly. Where many decisions are exact ties the filter cannot settle them and the exact \
+         fallback runs: on the large pairs, full of exact and near ties (co-circular arcs whose \
+         vertices are all equidistant from Q's, dense circles with parallel facing edges), the \
+         factor reaches {:.0}× ({}). The reported distances are constructed once from the \
          exact features and stay within the documented bounds (distance 3.5 ulps, squared distance \
          5, Hausdorff 3.5, CMMR 6), even 1 ulp from contact or 1e15 from the origin.\n\n",
         random_ratio.0, random_ratio.1, large_ratio.0, large_ratio.1,
