@@ -701,10 +701,12 @@ fn main() {
     table(&mut md, &rows, ("time, random", "time, hard"));
     let _ = writeln!(
         md,
-        "\nSimple polygons (convex hulls disjoint; pairs whose hulls meet need Amato's separators, not \
-         built yet): **random** = 20 pairs of random 64-vertex stars side by side; **hard** = the {} \
-         cases of `fixtures/hard/simple.txt` (shapes 1–1000 ulps apart, the same at 1e12, saw-teeth \
-         facing tip to notch). The time includes the intersection check.\n",
+        "\nSimple polygons (convex hulls disjoint, or the polygons meeting; disjoint polygons whose \
+         hulls meet need Amato's separators, not built yet): **random** = 20 pairs of random \
+         64-vertex stars side by side; **hard** = the {} cases of `fixtures/hard/simple.txt` \
+         (shapes 1–1000 ulps apart, the same at 1e12, saw-teeth facing tip to notch, and the \
+         convex `orient_1_far` and `near_parallel_far` pairs above, disjoint, touching or \
+         overlapping). The time includes the intersection check.\n",
         shard.len()
     );
     table(&mut md, &srows, ("time, random", "time, hard"));
@@ -773,7 +775,8 @@ fn main() {
          take differences of nearby coordinates first, which are exact in `f64`, so large offsets \
          alone rarely defeat it; what does is a decision whose exact value lies below the rounding \
          of products of long differences. The default distance under Fast was wrong on {} of {} \
-         hard cases, by family: {}. **Exact** \
+         hard cases, by family: {}; `separation` of simple polygons under Fast, on {} of \
+         {}. **Exact** \
          evaluates every predicate in exact arithmetic without a filter; its answers are the same \
          as Robust's, at a much higher cost, and it adds exact rational results \
          (`distance_exact`, `hausdorff_squared_exact`): use it as a reference, or when an exact \
@@ -785,6 +788,8 @@ fn main() {
             .map(|(f, k)| format!("`{f}` {k}"))
             .collect::<Vec<_>>()
             .join(", "),
+        srows.first().map_or(0, |r| r.wrong),
+        shard.len(),
     );
     let docs = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../docs");
     std::fs::write(docs.join("accuracy.md"), md).expect("write docs/accuracy.md");

@@ -349,10 +349,13 @@ fn main() {
         case(&mut out, "identical", &format!("{k}"), &pair.p, &pair.p);
     }
 
-    fast_hurting(&mut out, &mut rng);
+    let hurting = fast_hurting(&mut rng);
+    for (family, name, p, q) in &hurting {
+        case(&mut out, family, name, p, q);
+    }
 
     write("convex.txt", &out);
-    write("simple.txt", &simple_cases());
+    write("simple.txt", &simple_cases(&hurting));
     let (large_convex, large_simple) = large_cases();
     write("large_convex.txt", &large_convex);
     write("large_simple.txt", &large_simple);
@@ -486,17 +489,18 @@ fn world(v: (i128, i128)) -> DVec2 {
 ///
 /// - `orient_1_far`: a vertex `w` of Q at orientation exactly `k ∈ {−3, −1, 0, 1, 3}` (in units of
 ///   the integer grid) against a long edge `ab = 16·d` of P (`d` a primitive integer vector, `|b − a| ≈ 2^47`),
-///   all near `(1e15, 1e15)`: `w` is `|k|/|d| ≈ 2^−43` off the edge's line (far below an ulp of the coordinates,
-///   0.125), on the outside (disjoint), on it (touching) or inside (overlapping), while a plain
+///   all near `(1e15, 1e15)`: `w` is `|k|/|d| ≈ 2^−43` off the edge's line (far below an ulp of
+///   the coordinates, 0.125), on the outside (disjoint), on it (touching) or inside (overlapping), while a plain
 ///   `f64` cross product of those differences rounds by about `2^42`.
 /// - `near_parallel_far`: Q's facing edge `cd` with its ends at orientations `(k_c, k_d)` against
 ///   P's long edge: nearly parallel edges whose nearer end is decided by a difference of
 ///   `1/|d|`.
 /// - `cocircular_1e12`: the co-circular lattice sets scaled by `10^12` (exact integers, no longer
 ///   short significands, so `f64` squares round), and one vertex moved one ulp in or out.
-fn fast_hurting(out: &mut String, rng: &mut SplitMix64) {
+fn fast_hurting(rng: &mut SplitMix64) -> Vec<Labelled> {
+    let mut out = Vec::new();
     for case_k in 0..5 {
-        // A primitive direction with ~47-bit components, a base point near (1e15, 1e15).
+        // A primitive direction with ~43-bit components, a base point near (1e15, 1e15).
         let d = loop {
             let d = (
                 i128::from(rng.range_i64(1 << 42, 1 << 43)),
@@ -534,7 +538,7 @@ fn fast_hurting(out: &mut String, rng: &mut SplitMix64) {
                 q
             };
             if polydist_oracle::is_strictly_convex(&p) && polydist_oracle::is_strictly_convex(&q) {
-                case(out, "orient_1_far", &format!("{case_k}_k{k}"), &p, &q);
+                out.push(("orient_1_far", format!("{case_k}_k{k}"), p.clone(), q));
             }
         }
         // Nearly parallel facing edges: c at orientation kc, d at kd against ab (both outside).
@@ -550,13 +554,12 @@ fn fast_hurting(out: &mut String, rng: &mut SplitMix64) {
                 q
             };
             if polydist_oracle::is_strictly_convex(&q) {
-                case(
-                    out,
+                out.push((
                     "near_parallel_far",
-                    &format!("{case_k}_{kc}_{kd}"),
-                    &p,
-                    &q,
-                );
+                    format!("{case_k}_{kc}_{kd}"),
+                    p.clone(),
+                    q,
+                ));
             }
         }
     }
@@ -579,11 +582,15 @@ fn fast_hurting(out: &mut String, rng: &mut SplitMix64) {
             let mut p = arc.clone();
             p[mid].x = step_ulps(p[mid].x, steps);
             if p.len() >= 3 && polydist_oracle::is_convex(&p) {
-                case(out, "cocircular_1e12", &format!("k{k}_{steps}"), &p, &q);
+                out.push(("cocircular_1e12", format!("k{k}_{steps}"), p, q.clone()));
             }
         }
     }
+    out
 }
+
+/// A pair with its family and name.
+type Labelled = (&'static str, String, Vec<DVec2>, Vec<DVec2>);
 
 /// The pair of a `gen` spec, and the spec with its fingerprint appended.
 fn rebuild(spec: &str) -> (Vec<DVec2>, Vec<DVec2>, String) {
@@ -635,7 +642,11 @@ fn simple_case(out: &mut String, family: &str, name: &str, p: &[DVec2], q: &[DVe
 /// Amato's separators): generated shapes side by side 1, 4 and 1000 ulps apart along x or y, far
 /// from the origin, and saw-teeth facing each other tip to notch (the hulls' closest features are
 /// lids, so the separable-chains route runs).
-fn simple_cases() -> String {
+///
+/// Then the convex pairs built against plain `f64` near `(1e15, 1e15)` (`orient_1_far`,
+/// `near_parallel_far`: convex polygons are simple; the touching and overlapping ones exercise the
+/// intersection check).
+fn simple_cases(hurting: &[Labelled]) -> String {
     let mut out = String::new();
     out.push_str(
         "# polydist hard-case suite: pairs of simple polygons with exact answers from the oracle.\n\
@@ -693,6 +704,11 @@ fn simple_cases() -> String {
             if let Some(q) = with_gap_ulps(&p, &q, gap_ulps, Axis::X) {
                 simple_case(&mut out, "sawteeth", &format!("t{t}_{gap_ulps}ulp"), &p, &q);
             }
+        }
+    }
+    for (family, name, p, q) in hurting {
+        if family.ends_with("_far") {
+            simple_case(&mut out, family, name, p, q);
         }
     }
     out
