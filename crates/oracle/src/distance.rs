@@ -65,7 +65,7 @@ impl ExactDistance {
 
 /// Squared distance in grid units between feature `f` of `p` and `g` of `q`,
 /// or `None` if an index is out of range.
-fn feature_frac(p: &[IPt], q: &[IPt], f: Feature, g: Feature) -> Option<Frac> {
+pub(crate) fn feature_frac(p: &[IPt], q: &[IPt], f: Feature, g: Feature) -> Option<Frac> {
     let ep = edge_count(p.len());
     let eq = edge_count(q.len());
     Some(match (f, g) {

@@ -23,6 +23,11 @@
 //! * filled-convex measures: [`sq_dist_point_filled_convex`],
 //!   [`per_vertex_sq_dist`], [`directed_hausdorff_filled`],
 //!   [`hausdorff_filled`], [`cmmr`];
+//! * large polygons (10⁴–10⁵ vertices): the same answers by a pruned exact
+//!   search (box tree, exact bounds; the proof that no optimal pair is
+//!   discarded is in the module doc): [`boundary_distance_pruned`],
+//!   [`filled_distance_pruned`], [`min_vertex_distance_pruned`],
+//!   [`directed_hausdorff_disjoint_pruned`];
 //! * rounding and error measurement: [`to_f64_nearest`], [`sqrt_nearest`],
 //!   [`step_ulps`], [`ulp_distance`], [`ulps_error`], [`ulps_error_sqrt`].
 //!
@@ -40,7 +45,10 @@
 //! [`with_gap_ulps`], [`offset`] / [`offset_family`] / [`OFFSETS`], [`collinear_triples`],
 //! [`near_collinear`], [`short_dyadic`], [`star`], [`comb`],
 //! [`interleaved_combs`], [`interleaved_combs_ulps`], [`spiral`],
-//! [`two_opt`], [`pocket_pair`], [`convex_pair`] with [`Relation`].
+//! [`two_opt`], [`pocket_pair`], [`convex_pair`] with [`Relation`]; large
+//! pairs rebuilt bit for bit from a fixture's `gen` line, without library
+//! trigonometry: [`large_pair`] / [`large_pair_from`] (with [`fingerprint`]),
+//! [`dense_circle`], [`cocircular_arc`].
 //! (They live at the crate root: `gen`, the module name one might expect,
 //! is a reserved keyword in edition 2024.)
 //!
@@ -68,6 +76,8 @@ mod exact;
 mod generators;
 mod hard;
 mod hausdorff;
+mod large;
+mod pruned;
 mod rounding;
 mod separation;
 mod shape;
@@ -99,6 +109,11 @@ pub use crate::hard::{HardAnswers, SimpleHardAnswers};
 pub use crate::hausdorff::{
     cmmr, directed_hausdorff_filled, hausdorff_filled, per_vertex_sq_dist,
     sq_dist_point_filled_convex,
+};
+pub use crate::large::{cocircular_arc, dense_circle, fingerprint, large_pair, large_pair_from};
+pub use crate::pruned::{
+    boundary_distance_pruned, directed_hausdorff_disjoint_pruned, filled_distance_pruned,
+    min_vertex_distance_pruned,
 };
 pub use crate::rounding::{
     sqrt_nearest, step_ulps, to_f64_nearest, ulp_distance, ulps_error, ulps_error_sqrt,

@@ -96,11 +96,14 @@ fn run_case<K: Kernel>(
             "distance Schwartz",
             check_distance(&distance_schwartz_with::<K>(p, q), a),
         ),
-        (
+    ];
+    // The O(nm) brute force only below 10⁶ feature pairs: the large cases leave it to the report.
+    if p.len() * q.len() <= BRUTE_MAX {
+        out.push((
             "distance brute force",
             check_distance(&distance_brute::<K>(p, q), a),
-        ),
-    ];
+        ));
+    }
     let v = min_vertex_distance_with::<K>(p, q);
     out.push((
         "vertex distance",
@@ -132,23 +135,68 @@ fn run_case<K: Kernel>(
             (e > 3.5).then(|| format!("Hausdorff off by {e} ulps"))
         },
     ));
-    let c = cmmr_with::<K>(p, q);
-    let e = ulps_error(c.value, &a.exact.cmmr);
-    out.push(("CMMR", (e > 6.0).then(|| format!("CMMR off by {e} ulps"))));
+    // The large cases store no CMMR (an exact sum of 10⁵ rationals is out of reach).
+    if let Some(exact) = &a.exact.cmmr {
+        let c = cmmr_with::<K>(p, q);
+        let e = ulps_error(c.value, exact);
+        out.push(("CMMR", (e > 6.0).then(|| format!("CMMR off by {e} ulps"))));
+    }
     out
+}
+
+/// The largest `n·m` at which the tests run the `O(nm)` brute forces.
+const BRUTE_MAX: usize = 1_000_000;
+
+/// The polygons of a case: its `p` and `q` lines, or for a large case its `gen` line rebuilt (and
+/// checked against the stored fingerprint) by the oracle.
+fn polygons(c: &HardCase) -> (Vec<DVec2>, Vec<DVec2>) {
+    match c.answer("gen") {
+        Some(words) => polydist_oracle::large_pair(words)
+            .unwrap_or_else(|e| panic!("{}/{}: {e}", c.family, c.name)),
+        None => (points(&c.p), points(&c.q)),
+    }
 }
 
 #[test]
 fn every_convex_algorithm_on_every_hard_case() {
     let cases = hard_cases("hard/convex.txt").expect("fixtures/hard/convex.txt");
-    assert!(cases.len() >= 80, "the suite shrank: {} cases", cases.len());
+    assert!(
+        cases.len() >= 170,
+        "the suite shrank: {} cases",
+        cases.len()
+    );
+    convex_suite(&cases);
+}
+
+/// The large convex pairs (10⁴–10⁵ vertices, `fixtures/hard/large_convex.txt`, answers from the
+/// oracle's pruned exact search): every algorithm but the `O(nm)` brute force and CMMR (no exact
+/// value stored), under every kernel.
+#[test]
+fn every_convex_algorithm_on_every_large_case() {
+    let cases = hard_cases("hard/large_convex.txt").expect("fixtures/hard/large_convex.txt");
+    assert!(cases.len() >= 9, "the suite shrank: {} cases", cases.len());
+    for family in ["large_circle", "large_cocircular"] {
+        assert!(
+            cases.iter().any(|c| c.family == family),
+            "no case of {family}"
+        );
+    }
+    let sizes: Vec<usize> = cases.iter().map(|c| polygons(c).0.len()).collect();
+    assert!(sizes.iter().any(|&n| n >= 10_000) && sizes.iter().any(|&n| n >= 75_000));
+    convex_suite(&cases);
+}
+
+/// Every convex algorithm under every kernel on `cases`: Robust and Exact must be exactly right on
+/// every case; Fast's wrong answers are counted and printed.
+fn convex_suite(cases: &[HardCase]) {
     let mut failures = Vec::new();
     let mut fast_wrong: BTreeMap<&str, usize> = BTreeMap::new();
-    for c in &cases {
+    for c in cases {
         let a = answers(c);
+        let (vp, vq) = polygons(c);
         let (p, q) = (
-            ConvexPolygon::try_new(&points(&c.p)).expect("convex"),
-            ConvexPolygon::try_new(&points(&c.q)).expect("convex"),
+            ConvexPolygon::try_new(&vp).expect("convex"),
+            ConvexPolygon::try_new(&vq).expect("convex"),
         );
         for (kernel, results) in [
             ("Robust", run_case::<Robust>(&p, &q, &a)),
@@ -197,6 +245,9 @@ fn the_suite_covers_every_family() {
         "nested",
         "identical",
         "far",
+        "orient_1_far",
+        "near_parallel_far",
+        "cocircular_1e12",
     ] {
         assert!(
             cases.iter().any(|c| c.family == family),
@@ -209,11 +260,37 @@ fn the_suite_covers_every_family() {
 /// brute-force twin under every kernel.
 #[test]
 fn polygon_separation_on_every_simple_hard_case() {
+    let cases = hard_cases("hard/simple.txt").expect("fixtures/hard/simple.txt");
+    assert!(cases.len() >= 70, "the suite shrank: {} cases", cases.len());
+    let chains = simple_suite(&cases);
+    assert!(
+        chains >= 5,
+        "the separable-chains route ran on {chains} cases only"
+    );
+}
+
+/// The large simple pairs (stars and combs of 10⁴ vertices, hulls disjoint,
+/// `fixtures/hard/large_simple.txt`, answers from the oracle's pruned exact search): `separation`
+/// under every kernel (the `O(nm)` brute force is left to the report).
+#[test]
+fn polygon_separation_on_every_large_simple_case() {
+    let cases = hard_cases("hard/large_simple.txt").expect("fixtures/hard/large_simple.txt");
+    assert!(cases.len() >= 4, "the suite shrank: {} cases", cases.len());
+    for family in ["large_star", "large_comb"] {
+        assert!(
+            cases.iter().any(|c| c.family == family),
+            "no case of {family}"
+        );
+    }
+    simple_suite(&cases);
+}
+
+/// `separation` (and below [`BRUTE_MAX`] its brute-force twin) under every kernel on `cases`;
+/// returns how many cases took the separable-chains route.
+fn simple_suite(cases: &[HardCase]) -> usize {
     use polydist::polygon::SimplePolygon;
     use polydist::separation::{PolygonSeparation, Route, polygon_separation_brute, separation};
 
-    let cases = hard_cases("hard/simple.txt").expect("fixtures/hard/simple.txt");
-    assert!(cases.len() >= 25, "the suite shrank: {} cases", cases.len());
     fn check<K: Kernel>(p: &SimplePolygon, q: &SimplePolygon, c: &HardCase, brute: bool) -> Check {
         let exact = SimpleHardAnswers::from_words(&c.answers).expect("answers");
         let (contact, sq) = (&exact.contact, &exact.dist);
@@ -244,10 +321,11 @@ fn polygon_separation_on_every_simple_hard_case() {
     }
     let mut failures = Vec::new();
     let (mut fast_wrong, mut chains) = (0, 0);
-    for c in &cases {
+    for c in cases {
+        let (vp, vq) = polygons(c);
         let (p, q) = (
-            SimplePolygon::try_new(&points(&c.p)).expect("simple"),
-            SimplePolygon::try_new(&points(&c.q)).expect("simple"),
+            SimplePolygon::try_new(&vp).expect("simple"),
+            SimplePolygon::try_new(&vq).expect("simple"),
         );
         if let Ok(PolygonSeparation::Separated {
             route: Route::SeparableChains,
@@ -256,11 +334,14 @@ fn polygon_separation_on_every_simple_hard_case() {
         {
             chains += 1;
         }
-        for (name, r) in [
+        let mut results = vec![
             ("Robust separation", check::<Robust>(&p, &q, c, false)),
             ("Exact separation", check::<Exact>(&p, &q, c, false)),
-            ("Robust brute force", check::<Robust>(&p, &q, c, true)),
-        ] {
+        ];
+        if vp.len() * vq.len() <= BRUTE_MAX {
+            results.push(("Robust brute force", check::<Robust>(&p, &q, c, true)));
+        }
+        for (name, r) in results {
             if let Some(why) = r {
                 failures.push(format!("{name} {}/{}: {why}", c.family, c.name));
             }
@@ -272,13 +353,10 @@ fn polygon_separation_on_every_simple_hard_case() {
         cases.len()
     );
     assert!(
-        chains >= 5,
-        "the separable-chains route ran on {chains} cases only"
-    );
-    assert!(
         failures.is_empty(),
         "{} failures:\n{}",
         failures.len(),
         failures.join("\n")
     );
+    chains
 }
