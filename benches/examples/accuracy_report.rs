@@ -310,7 +310,7 @@ enum SimpleAlg {
 impl SimpleAlg {
     fn name(self) -> &'static str {
         match self {
-            SimpleAlg::Separation => "separation (Amato, disjoint hulls)",
+            SimpleAlg::Separation => "separation (Amato: hull route, section 3, separators)",
             SimpleAlg::Brute => "separation, brute force",
         }
     }
@@ -701,10 +701,11 @@ fn main() {
     table(&mut md, &rows, ("time, random", "time, hard"));
     let _ = writeln!(
         md,
-        "\nSimple polygons (convex hulls disjoint, or the polygons meeting; disjoint polygons whose \
-         hulls meet need Amato's separators, not built yet): **random** = 20 pairs of random \
-         64-vertex stars side by side; **hard** = the {} cases of `fixtures/hard/simple.txt` \
-         (shapes 1–1000 ulps apart, the same at 1e12, saw-teeth facing tip to notch, and the \
+        "\nSimple polygons (a polygon in a pocket of the other, the separator's containing case, \
+         is not built and not in the suite): **random** = 20 pairs of random 64-vertex stars side \
+         by side; **hard** = the {} cases of `fixtures/hard/simple.txt` (shapes 1–1000 ulps \
+         apart, the same at 1e12, saw-teeth facing tip to notch, interlocked combs 1–1000 ulps \
+         and 1e-9 apart whose hulls meet (Amato's separator route), the same at 1e12, and the \
          convex `orient_1_far` and `near_parallel_far` pairs above, disjoint, touching or \
          overlapping). The time includes the intersection check.\n",
         shard.len()

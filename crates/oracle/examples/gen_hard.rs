@@ -2,7 +2,7 @@
 //! oracle's seeded generators, each with its exact answers computed by this crate (the independent
 //! exact rational brute force), never by an algorithm under test.
 //!
-//! Also writes `fixtures/hard/simple.txt` (simple polygons, hulls disjoint) and the large pairs,
+//! Also writes `fixtures/hard/simple.txt` (simple polygons: hulls disjoint, and interlocked combs) and the large pairs,
 //! `large_convex.txt` and `large_simple.txt` (10⁴–10⁵ vertices, stored as a `gen` line that
 //! `polydist_oracle::large_pair` rebuilds, answers from the oracle's pruned exact search).
 //!
@@ -35,9 +35,9 @@ use polydist_oracle::{
     Axis, Contact, Feature, Relation, SplitMix64, boundary_distance, boundary_distance_pruned,
     cmmr, cocircular, cocircular_perturbed, comb, contact_status_convex, contact_status_simple,
     convex_distance, convex_pair, directed_hausdorff_disjoint_pruned, directed_hausdorff_filled,
-    filled_distance_pruned, fingerprint, large_pair_from, min_vertex_distance,
-    min_vertex_distance_pruned, offset, parallel_facing, sawtooth, sign_orient, sliver, spiral,
-    star, step_ulps, two_opt, with_gap_ulps,
+    filled_distance_pruned, fingerprint, interleaved_combs, interleaved_combs_ulps,
+    large_pair_from, min_vertex_distance, min_vertex_distance_pruned, offset, parallel_facing,
+    sawtooth, sign_orient, sliver, spiral, star, step_ulps, two_opt, with_gap_ulps,
 };
 
 fn feature(f: Feature) -> String {
@@ -638,10 +638,11 @@ fn simple_case(out: &mut String, family: &str, name: &str, p: &[DVec2], q: &[DVe
     let _ = writeln!(out, "end");
 }
 
-/// The simple-polygon families whose convex hulls are disjoint (the interlocked families wait for
-/// Amato's separators): generated shapes side by side 1, 4 and 1000 ulps apart along x or y, far
-/// from the origin, and saw-teeth facing each other tip to notch (the hulls' closest features are
-/// lids, so the separable-chains route runs).
+/// The simple-polygon families: generated shapes side by side 1, 4 and 1000 ulps apart along x or
+/// y, far from the origin, saw-teeth facing each other tip to notch (the hulls' closest features are
+/// lids, so the separable-chains route runs), and interlocked combs (the hulls meet: Amato's
+/// separator route; a polygon in a pocket of the other, the separator's containing case, is not
+/// built and not in the suite).
 ///
 /// Then the convex pairs built against plain `f64` near `(1e15, 1e15)` (`orient_1_far`,
 /// `near_parallel_far`: convex polygons are simple; the touching and overlapping ones exercise the
@@ -703,6 +704,31 @@ fn simple_cases(hurting: &[Labelled]) -> String {
                 .collect();
             if let Some(q) = with_gap_ulps(&p, &q, gap_ulps, Axis::X) {
                 simple_case(&mut out, "sawteeth", &format!("t{t}_{gap_ulps}ulp"), &p, &q);
+            }
+        }
+    }
+    // Interlocked combs: the hulls meet, so `separation` takes Amato's separator route. Clearances
+    // of 1, 4 and 1000 grid steps (one ulp of the coordinates) and 1e-9, every clearance tying
+    // exactly; the same scaled by 2^41 and moved to (1e12, -1e12) (exact).
+    for (teeth, len) in [(3usize, 3u32), (8, 5)] {
+        let mut pairs: Vec<(String, Vec<DVec2>, Vec<DVec2>)> = [1u64, 4, 1000]
+            .iter()
+            .map(|&ulps| {
+                let c = interleaved_combs_ulps(teeth, len, ulps);
+                (format!("t{teeth}_l{len}_{ulps}ulp"), c.a, c.b)
+            })
+            .collect();
+        let c = interleaved_combs(teeth, len, 1e-9);
+        pairs.push((format!("t{teeth}_l{len}_gap1e-9"), c.a, c.b));
+        for (name, a, b) in pairs {
+            simple_case(&mut out, "interlocked_combs", &name, &a, &b);
+            let scale =
+                |v: &[DVec2]| -> Vec<DVec2> { v.iter().map(|&x| x * 2f64.powi(41)).collect() };
+            if let (Some(am), Some(bm)) = (
+                offset(&scale(&a), 1e12, -1e12),
+                offset(&scale(&b), 1e12, -1e12),
+            ) {
+                simple_case(&mut out, "interlocked_combs_far", &name, &am, &bm);
             }
         }
     }

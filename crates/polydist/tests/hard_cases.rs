@@ -256,16 +256,20 @@ fn the_suite_covers_every_family() {
     }
 }
 
-/// The simple-polygon cases (`fixtures/hard/simple.txt`, hulls disjoint): `separation` and its
-/// brute-force twin under every kernel.
+/// The simple-polygon cases (`fixtures/hard/simple.txt`: hulls disjoint, and interlocked combs whose
+/// hulls meet): `separation` and its brute-force twin under every kernel.
 #[test]
 fn polygon_separation_on_every_simple_hard_case() {
     let cases = hard_cases("hard/simple.txt").expect("fixtures/hard/simple.txt");
     assert!(cases.len() >= 70, "the suite shrank: {} cases", cases.len());
-    let chains = simple_suite(&cases);
+    let (chains, separators) = simple_suite(&cases);
     assert!(
         chains >= 5,
         "the separable-chains route ran on {chains} cases only"
+    );
+    assert!(
+        separators >= 16,
+        "the separator route ran on {separators} cases only"
     );
 }
 
@@ -286,8 +290,8 @@ fn polygon_separation_on_every_large_simple_case() {
 }
 
 /// `separation` (and below [`BRUTE_MAX`] its brute-force twin) under every kernel on `cases`;
-/// returns how many cases took the separable-chains route.
-fn simple_suite(cases: &[HardCase]) -> usize {
+/// returns how many cases took the separable-chains route and how many the separator route.
+fn simple_suite(cases: &[HardCase]) -> (usize, usize) {
     use polydist::polygon::SimplePolygon;
     use polydist::separation::{PolygonSeparation, Route, polygon_separation_brute, separation};
 
@@ -320,19 +324,23 @@ fn simple_suite(cases: &[HardCase]) -> usize {
         }
     }
     let mut failures = Vec::new();
-    let (mut fast_wrong, mut chains) = (0, 0);
+    let (mut fast_wrong, mut chains, mut separators) = (0, 0, 0);
     for c in cases {
         let (vp, vq) = polygons(c);
         let (p, q) = (
             SimplePolygon::try_new(&vp).expect("simple"),
             SimplePolygon::try_new(&vq).expect("simple"),
         );
-        if let Ok(PolygonSeparation::Separated {
-            route: Route::SeparableChains,
-            ..
-        }) = separation::<Robust>(&p, &q)
-        {
-            chains += 1;
+        match separation::<Robust>(&p, &q) {
+            Ok(PolygonSeparation::Separated {
+                route: Route::SeparableChains,
+                ..
+            }) => chains += 1,
+            Ok(PolygonSeparation::Separated {
+                route: Route::Separators,
+                ..
+            }) => separators += 1,
+            _ => {}
         }
         let mut results = vec![
             ("Robust separation", check::<Robust>(&p, &q, c, false)),
@@ -358,5 +366,5 @@ fn simple_suite(cases: &[HardCase]) -> usize {
         failures.len(),
         failures.join("\n")
     );
-    chains
+    (chains, separators)
 }
