@@ -555,9 +555,12 @@ pub(crate) fn solve<K: Kernel>(
         ..SeparationStats::default()
     };
     let mut best: Option<(ClosestPair, Dist2)> = None;
+    let (mut pcv, mut qcv) = (Vec::new(), Vec::new());
     for (i, &((plo, phi), (qlo, qhi))) in b.sub.iter().enumerate() {
-        let pcv: Vec<DVec2> = (plo..=phi).map(|k| vp[(r.pb + k) % r.np]).collect();
-        let qcv: Vec<DVec2> = (qlo..=qhi).map(|k| r.ring[k]).collect();
+        pcv.clear();
+        pcv.extend((plo..=phi).map(|k| vp[(r.pb + k) % r.np]));
+        qcv.clear();
+        qcv.extend((qlo..=qhi).map(|k| r.ring[k]));
         stats.subproblem_vertices += pcv.len() + qcv.len();
         let s = &b.runs[b.kept[i]];
         let (a, c) = (r.ring[s.lo], r.ring[s.hi]);
