@@ -75,7 +75,7 @@ mod ring;
 mod simple;
 mod source_map;
 mod sweep;
-mod treap;
+pub mod treap;
 
 pub use andrew::{convex_hull, convex_hull_with};
 pub use convex::ConvexPolygon;

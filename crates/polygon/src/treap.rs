@@ -1,4 +1,5 @@
-//! The sweep status: an ordered set of small integer ids, kept as a treap in an arena.
+//! The sweep status: an ordered set of small integer ids, kept as a treap in an arena. Used by the
+//! simplicity sweep here and by the triangulation sweep of `polydist-separation`.
 //!
 //! Positions are decided by a caller-supplied comparator during insertion only; removal and the
 //! neighbour queries follow parent links and never compare. So whatever the comparator answers (even
@@ -28,7 +29,7 @@ struct Node {
 
 /// An ordered set of the ids `0..capacity`, each inserted at most once at a time.
 #[derive(Debug)]
-pub(crate) struct Treap {
+pub struct Treap {
     nodes: Vec<Node>,
     root: usize,
 }
@@ -43,7 +44,8 @@ fn priority(id: usize) -> u64 {
 
 impl Treap {
     /// An empty set able to hold the ids `0..capacity`.
-    pub(crate) fn new(capacity: usize) -> Treap {
+    #[must_use]
+    pub fn new(capacity: usize) -> Treap {
         let nodes = (0..capacity)
             .map(|id| Node {
                 left: NIL,
@@ -59,7 +61,7 @@ impl Treap {
     /// Inserts `id` where the comparator puts it: at each node `other` on the way down, `cmp(other)`
     /// says whether `id` goes before (`Less`) or after (`Equal`, `Greater`) it. A comparator error stops
     /// the insertion, leaves the set unchanged and is returned. Inserting a present id does nothing.
-    pub(crate) fn insert<E>(
+    pub fn insert<E>(
         &mut self,
         id: usize,
         mut cmp: impl FnMut(usize) -> Result<Ordering, E>,
@@ -102,10 +104,10 @@ impl Treap {
         Ok(())
     }
 
-    /// Removes `id` (nothing when absent).
-    pub(crate) fn remove(&mut self, id: usize) {
+    /// Removes `id`; `false` (and nothing done) when it was absent.
+    pub fn remove(&mut self, id: usize) -> bool {
         if !self.nodes[id].linked {
-            return;
+            return false;
         }
         // Rotate `id` down until it is a leaf; each rotation shrinks its subtree, so this terminates.
         loop {
@@ -133,15 +135,37 @@ impl Treap {
             linked: false,
             ..self.nodes[id]
         };
+        true
+    }
+
+    /// The last id in the order for which `pred` holds, for a `pred` that holds on a prefix of the
+    /// order (e.g. "this edge lies below the point"): one descent, at most the height in calls. A
+    /// predicate error stops the search and is returned.
+    pub fn last_where<E>(
+        &self,
+        mut pred: impl FnMut(usize) -> Result<bool, E>,
+    ) -> Result<Option<usize>, E> {
+        let (mut cur, mut best) = (self.root, None);
+        while cur != NIL {
+            if pred(cur)? {
+                best = Some(cur);
+                cur = self.nodes[cur].right;
+            } else {
+                cur = self.nodes[cur].left;
+            }
+        }
+        Ok(best)
     }
 
     /// The id just before `id` in the order (`None` for the first, or when `id` is absent).
-    pub(crate) fn prev(&self, id: usize) -> Option<usize> {
+    #[must_use]
+    pub fn prev(&self, id: usize) -> Option<usize> {
         self.neighbour(id, |n| n.left, |n| n.right)
     }
 
     /// The id just after `id` in the order (`None` for the last, or when `id` is absent).
-    pub(crate) fn next(&self, id: usize) -> Option<usize> {
+    #[must_use]
+    pub fn next(&self, id: usize) -> Option<usize> {
         self.neighbour(id, |n| n.right, |n| n.left)
     }
 

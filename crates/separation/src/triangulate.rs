@@ -50,6 +50,7 @@ use std::collections::HashMap;
 
 use glam::DVec2;
 use polydist_polygon::predicates::{Kernel, Orientation, Sign, is_valid_coordinate};
+use polydist_polygon::treap::Treap;
 
 /// What lies across one side of a triangle of a [`Triangulation`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -364,170 +365,11 @@ pub fn triangulate<K: Kernel>(ring: &[DVec2]) -> Result<Triangulation, Triangula
 }
 
 // ---------------------------------------------------------------------------------------------------
-// The sweep status: a treap of edge ids whose shape never depends on comparator consistency.
+// The sweep status is the polygon crate's treap of edge ids (Seidel & Aragon 1996), whose shape never
+// depends on comparator consistency.
 
-/// No node.
+/// No vertex (the helper of an edge not yet set).
 const NIL: usize = usize::MAX;
-
-/// A treap node (ids index the arena).
-#[derive(Clone, Copy, Debug)]
-struct Node {
-    left: usize,
-    right: usize,
-    parent: usize,
-    priority: u64,
-    linked: bool,
-}
-
-/// An ordered set of edge ids (Seidel & Aragon 1996). Insertion and search descend at most the
-/// height; removal rotates down along parent links and never compares.
-#[derive(Debug)]
-struct Status {
-    nodes: Vec<Node>,
-    root: usize,
-}
-
-/// splitmix64 of the id: a fixed priority, unrelated to the geometry.
-fn priority(id: usize) -> u64 {
-    let mut z = (id as u64).wrapping_add(0x9E37_79B9_7F4A_7C15);
-    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-    z ^ (z >> 31)
-}
-
-impl Status {
-    fn new(capacity: usize) -> Self {
-        let nodes = (0..capacity)
-            .map(|id| Node {
-                left: NIL,
-                right: NIL,
-                parent: NIL,
-                priority: priority(id),
-                linked: false,
-            })
-            .collect();
-        Status { nodes, root: NIL }
-    }
-
-    /// Inserts `id`; `above(other)` says whether `id` goes after `other`.
-    fn insert<E>(
-        &mut self,
-        id: usize,
-        mut above: impl FnMut(usize) -> Result<bool, E>,
-    ) -> Result<(), E> {
-        let (mut parent, mut go_right, mut cur) = (NIL, false, self.root);
-        while cur != NIL {
-            parent = cur;
-            go_right = above(cur)?;
-            cur = if go_right {
-                self.nodes[cur].right
-            } else {
-                self.nodes[cur].left
-            };
-        }
-        self.nodes[id] = Node {
-            left: NIL,
-            right: NIL,
-            parent,
-            linked: true,
-            ..self.nodes[id]
-        };
-        if parent == NIL {
-            self.root = id;
-        } else if go_right {
-            self.nodes[parent].right = id;
-        } else {
-            self.nodes[parent].left = id;
-        }
-        while self.nodes[id].parent != NIL
-            && self.nodes[self.nodes[id].parent].priority < self.nodes[id].priority
-        {
-            self.rotate_up(id);
-        }
-        Ok(())
-    }
-
-    /// The last id `e` in the order with `above(e)` true (the edge directly below a point).
-    fn last_below<E>(
-        &self,
-        mut above: impl FnMut(usize) -> Result<bool, E>,
-    ) -> Result<Option<usize>, E> {
-        let (mut cur, mut best) = (self.root, None);
-        while cur != NIL {
-            if above(cur)? {
-                best = Some(cur);
-                cur = self.nodes[cur].right;
-            } else {
-                cur = self.nodes[cur].left;
-            }
-        }
-        Ok(best)
-    }
-
-    /// Removes `id`; `false` when it was absent.
-    fn remove(&mut self, id: usize) -> bool {
-        if !self.nodes[id].linked {
-            return false;
-        }
-        loop {
-            let Node { left, right, .. } = self.nodes[id];
-            let child = match (left != NIL, right != NIL) {
-                (false, false) => break,
-                (true, false) => left,
-                (false, true) => right,
-                (true, true) => {
-                    if self.nodes[left].priority > self.nodes[right].priority {
-                        left
-                    } else {
-                        right
-                    }
-                }
-            };
-            self.rotate_up(child);
-        }
-        let parent = self.nodes[id].parent;
-        self.replace_child(parent, id, NIL);
-        self.nodes[id].parent = NIL;
-        self.nodes[id].linked = false;
-        true
-    }
-
-    fn rotate_up(&mut self, x: usize) {
-        let p = self.nodes[x].parent;
-        if p == NIL {
-            return;
-        }
-        let g = self.nodes[p].parent;
-        if self.nodes[p].left == x {
-            let moved = self.nodes[x].right;
-            self.nodes[p].left = moved;
-            if moved != NIL {
-                self.nodes[moved].parent = p;
-            }
-            self.nodes[x].right = p;
-        } else {
-            let moved = self.nodes[x].left;
-            self.nodes[p].right = moved;
-            if moved != NIL {
-                self.nodes[moved].parent = p;
-            }
-            self.nodes[x].left = p;
-        }
-        self.nodes[p].parent = x;
-        self.nodes[x].parent = g;
-        self.replace_child(g, p, x);
-    }
-
-    fn replace_child(&mut self, parent: usize, old: usize, new: usize) {
-        if parent == NIL {
-            self.root = new;
-        } else if self.nodes[parent].left == old {
-            self.nodes[parent].left = new;
-        } else {
-            self.nodes[parent].right = new;
-        }
-    }
-}
 
 // ---------------------------------------------------------------------------------------------------
 // Phase 1: monotone decomposition.
@@ -540,7 +382,7 @@ fn monotone_diagonals<K: Kernel>(
     order: &[usize],
 ) -> Result<Vec<(usize, usize)>, TriangulationError> {
     let n = ring.len();
-    let mut status = Status::new(n);
+    let mut status = Treap::new(n);
     let mut helper = vec![NIL; n];
     let mut is_merge = vec![false; n];
     let mut diagonals = Vec::new();
@@ -575,12 +417,14 @@ fn monotone_diagonals<K: Kernel>(
                 if turn == Orientation::Clockwise {
                     // Split vertex: join it to the helper of the edge below.
                     let ej = status
-                        .last_below(|e| above(e, v))?
+                        .last_where(|e| above(e, v))?
                         .ok_or_else(|| bad(v, "no edge below a split vertex"))?;
                     diagonal(v, helper[ej], &mut diagonals)?;
                     helper[ej] = v;
                 }
-                status.insert(e_out, |e| above(e, v))?;
+                status.insert(e_out, |e| {
+                    above(e, v).map(|b| if b { Ordering::Greater } else { Ordering::Less })
+                })?;
                 helper[e_out] = v;
             }
             (false, false) => {
@@ -598,7 +442,7 @@ fn monotone_diagonals<K: Kernel>(
                     // Merge vertex.
                     is_merge[v] = true;
                     let ej = status
-                        .last_below(|e| above(e, v))?
+                        .last_where(|e| above(e, v))?
                         .ok_or_else(|| bad(v, "no edge below a merge vertex"))?;
                     if is_merge[helper[ej]] {
                         diagonal(v, helper[ej], &mut diagonals)?;
@@ -615,13 +459,15 @@ fn monotone_diagonals<K: Kernel>(
                 if is_merge[h] {
                     diagonal(v, h, &mut diagonals)?;
                 }
-                status.insert(e_out, |e| above(e, v))?;
+                status.insert(e_out, |e| {
+                    above(e, v).map(|b| if b { Ordering::Greater } else { Ordering::Less })
+                })?;
                 helper[e_out] = v;
             }
             (true, false) => {
                 // Regular vertex on an upper chain (interior below).
                 let ej = status
-                    .last_below(|e| above(e, v))?
+                    .last_where(|e| above(e, v))?
                     .ok_or_else(|| bad(v, "no edge below an upper vertex"))?;
                 if is_merge[helper[ej]] {
                     diagonal(v, helper[ej], &mut diagonals)?;
