@@ -47,6 +47,26 @@ fn feature(f: Feature) -> String {
     }
 }
 
+/// Optimal feature pairs as `F:G` words.
+fn feature_pairs(pairs: &[(Feature, Feature)]) -> String {
+    let words: Vec<String> = pairs
+        .iter()
+        .map(|&(f, g)| format!("{}:{}", feature(f), feature(g)))
+        .collect();
+    words.join(" ")
+}
+
+/// Optimal vertex pairs as `i:j` words.
+fn index_pairs(pairs: &[(usize, usize)]) -> String {
+    let words: Vec<String> = pairs.iter().map(|(i, j)| format!("{i}:{j}")).collect();
+    words.join(" ")
+}
+
+/// Vertex indices separated by spaces.
+fn list(a: &[usize]) -> String {
+    a.iter().map(usize::to_string).collect::<Vec<_>>().join(" ")
+}
+
 fn coords(v: &[DVec2]) -> String {
     v.iter()
         .map(|p| format!("{:?} {:?}", p.x, p.y))
@@ -93,19 +113,12 @@ fn case(out: &mut String, family: &str, name: &str, p: &[DVec2], q: &[DVec2]) {
         Contact::Touching => "touching",
         Contact::Overlapping => "overlapping",
     };
-    let pairs: Vec<String> = d
-        .pairs
-        .iter()
-        .map(|&(f, g)| format!("{}:{}", feature(f), feature(g)))
-        .collect();
-    let vp: Vec<String> = vpairs.iter().map(|(i, j)| format!("{i}:{j}")).collect();
-    let list = |a: &[usize]| a.iter().map(usize::to_string).collect::<Vec<_>>().join(" ");
     let _ = writeln!(out, "case {family} {name}");
     let _ = writeln!(out, "p {}", coords(p));
     let _ = writeln!(out, "q {}", coords(q));
     let _ = writeln!(out, "contact {contact}");
-    let _ = writeln!(out, "dist {} {}", d.sq, pairs.join(" "));
-    let _ = writeln!(out, "vdist {} {}", vsq, vp.join(" "));
+    let _ = writeln!(out, "dist {} {}", d.sq, feature_pairs(&d.pairs));
+    let _ = writeln!(out, "vdist {} {}", vsq, index_pairs(&vpairs));
     let _ = writeln!(out, "hpq {} {}", hpq, list(&apq));
     let _ = writeln!(out, "hqp {} {}", hqp, list(&aqp));
     let _ = writeln!(out, "cmmr {c}");
@@ -401,18 +414,11 @@ fn large_cases() -> (String, String) {
         let (vsq, vpairs) = min_vertex_distance_pruned(&p, &q);
         let (hpq, apq) = directed_hausdorff_disjoint_pruned(&p, &q).expect("disjoint");
         let (hqp, aqp) = directed_hausdorff_disjoint_pruned(&q, &p).expect("disjoint");
-        let pairs: Vec<String> = d
-            .pairs
-            .iter()
-            .map(|&(f, g)| format!("{}:{}", feature(f), feature(g)))
-            .collect();
-        let vp: Vec<String> = vpairs.iter().map(|(i, j)| format!("{i}:{j}")).collect();
-        let list = |a: &[usize]| a.iter().map(usize::to_string).collect::<Vec<_>>().join(" ");
         let _ = writeln!(convex, "case {family} {name}");
         let _ = writeln!(convex, "gen {gen_line}");
         let _ = writeln!(convex, "contact disjoint");
-        let _ = writeln!(convex, "dist {} {}", d.sq, pairs.join(" "));
-        let _ = writeln!(convex, "vdist {} {}", vsq, vp.join(" "));
+        let _ = writeln!(convex, "dist {} {}", d.sq, feature_pairs(&d.pairs));
+        let _ = writeln!(convex, "vdist {} {}", vsq, index_pairs(&vpairs));
         let _ = writeln!(convex, "hpq {} {}", hpq, list(&apq));
         let _ = writeln!(convex, "hqp {} {}", hqp, list(&aqp));
         let _ = writeln!(convex, "end");
@@ -436,15 +442,10 @@ fn large_cases() -> (String, String) {
         } else {
             panic!("{spec}: the large simple families are disjoint by construction")
         };
-        let pairs: Vec<String> = d
-            .pairs
-            .iter()
-            .map(|&(f, g)| format!("{}:{}", feature(f), feature(g)))
-            .collect();
         let _ = writeln!(simple, "case {family} {name}");
         let _ = writeln!(simple, "gen {gen_line}");
         let _ = writeln!(simple, "contact {contact}");
-        let _ = writeln!(simple, "dist {} {}", d.sq, pairs.join(" "));
+        let _ = writeln!(simple, "dist {} {}", d.sq, feature_pairs(&d.pairs));
         let _ = writeln!(simple, "end");
         println!(
             "{family}/{name}: {} and {} vertices, {} optimal pairs",
@@ -625,16 +626,11 @@ fn simple_case(out: &mut String, family: &str, name: &str, p: &[DVec2], q: &[DVe
         Contact::Overlapping => "overlapping",
     };
     let d = boundary_distance(p, q);
-    let pairs: Vec<String> = d
-        .pairs
-        .iter()
-        .map(|&(f, g)| format!("{}:{}", feature(f), feature(g)))
-        .collect();
     let _ = writeln!(out, "case {family} {name}");
     let _ = writeln!(out, "p {}", coords(p));
     let _ = writeln!(out, "q {}", coords(q));
     let _ = writeln!(out, "contact {contact}");
-    let _ = writeln!(out, "dist {} {}", d.sq, pairs.join(" "));
+    let _ = writeln!(out, "dist {} {}", d.sq, feature_pairs(&d.pairs));
     let _ = writeln!(out, "end");
 }
 

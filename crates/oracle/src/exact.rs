@@ -252,19 +252,15 @@ pub(crate) fn orient_h(a: &IPt, b: &IPt, c: &HPt) -> Ordering {
     sign_of(&cross(&ab, &ac))
 }
 
+/// The two values in increasing order.
+pub(crate) fn ordered<'a>(a: &'a BigInt, b: &'a BigInt) -> (&'a BigInt, &'a BigInt) {
+    if a <= b { (a, b) } else { (b, a) }
+}
+
 /// Whether `p` (assumed collinear with `a`, `b`) lies in the closed bounding
 /// box of `a`, `b`, hence on the closed segment.
 fn in_box(a: &IPt, b: &IPt, p: &IPt) -> bool {
-    let (x0, x1) = if a.x <= b.x {
-        (&a.x, &b.x)
-    } else {
-        (&b.x, &a.x)
-    };
-    let (y0, y1) = if a.y <= b.y {
-        (&a.y, &b.y)
-    } else {
-        (&b.y, &a.y)
-    };
+    let ((x0, x1), (y0, y1)) = (ordered(&a.x, &b.x), ordered(&a.y, &b.y));
     *x0 <= p.x && p.x <= *x1 && *y0 <= p.y && p.y <= *y1
 }
 

@@ -43,7 +43,7 @@ use num_rational::BigRational;
 use num_traits::Zero;
 
 use crate::distance::{ExactDistance, Feature, feature_frac};
-use crate::exact::{Frac, Grid, HPt, IPt, Location, locate, sq_pp, sq_ps};
+use crate::exact::{Frac, Grid, HPt, IPt, Location, locate, ordered, sq_pp, sq_ps};
 
 /// Items per leaf of the box tree.
 const LEAF: usize = 8;
@@ -59,16 +59,7 @@ struct GridBox {
 
 impl GridBox {
     fn of(a: &IPt, b: &IPt) -> GridBox {
-        let (x0, x1) = if a.x <= b.x {
-            (&a.x, &b.x)
-        } else {
-            (&b.x, &a.x)
-        };
-        let (y0, y1) = if a.y <= b.y {
-            (&a.y, &b.y)
-        } else {
-            (&b.y, &a.y)
-        };
+        let ((x0, x1), (y0, y1)) = (ordered(&a.x, &b.x), ordered(&a.y, &b.y));
         GridBox {
             x0: x0.clone(),
             x1: x1.clone(),
