@@ -1174,4 +1174,87 @@ mod tests {
             check_pair_v::<Robust>(&poly(&pair.a), &poly(&pair.b), true).unwrap();
         }
     }
+
+    /// A shape of every generator family (stars, 2-opt polygons, spirals, combs), about `n` vertices.
+    fn family_shape(rng: &mut SplitMix64, n: usize) -> Vec<DVec2> {
+        match rng.below(4) {
+            0 => polydist_oracle::star(rng, n, n / 4),
+            1 => polydist_oracle::two_opt(rng, n.min(50)),
+            2 => polydist_oracle::spiral((n as u32 / 4).clamp(3, 16), 1 + rng.below(2) as u32),
+            _ => polydist_oracle::comb(
+                (n / 4).clamp(1, 12),
+                1 + rng.below(4) as u32,
+                1 + rng.below(2) as u32,
+            ),
+        }
+    }
+
+    /// Two shapes of any family, the second scaled by `2^−k` and placed at random until the pair is
+    /// disjoint with meeting hulls and neither hull contains the other (up to 40 placements).
+    fn family_pair(seed: u64) -> Option<(SimplePolygon, SimplePolygon)> {
+        let mut rng = SplitMix64::new(seed ^ 0xfa31);
+        let (n, m) = (4 + rng.index(40), 4 + rng.index(40));
+        let a = family_shape(&mut rng, n);
+        let b = family_shape(&mut rng, m);
+        let p = SimplePolygon::try_new(&a).ok()?;
+        let centre = |v: &[DVec2]| {
+            let lo = v.iter().fold(DVec2::splat(f64::INFINITY), |x, &y| x.min(y));
+            let hi = v
+                .iter()
+                .fold(DVec2::splat(f64::NEG_INFINITY), |x, &y| x.max(y));
+            ((lo + hi) * 0.5, (hi - lo).length() * 0.5)
+        };
+        let ((ca, ra), (cb, rb)) = (centre(&a), centre(&b));
+        for _ in 0..40 {
+            let scale = 0.5f64.powi(rng.below(3) as i32);
+            let ang = core::f64::consts::TAU * rng.unit_f64();
+            let d =
+                DVec2::new(ang.cos(), ang.sin()) * (ra + rb * scale) * (0.1 + 0.7 * rng.unit_f64());
+            let bq: Vec<DVec2> = b.iter().map(|&x| (x - cb) * scale + ca + d).collect();
+            let Ok(q) = SimplePolygon::try_new(&bq) else {
+                continue;
+            };
+            if crate::polygon::intersection::<Robust>(&p, &q).is_some() {
+                continue;
+            }
+            if let Ok(Ok(r)) = region::<Robust>(&p, &q) {
+                // Skip hull-disjoint placements: they are tested apart.
+                let disjoint_hulls = matches!(
+                    polydist_convex::distance_with::<Robust>(&p.convex_hull(), &q.convex_hull()),
+                    polydist_convex::Separation::Disjoint(_)
+                );
+                if !disjoint_hulls && !r.ring.is_empty() {
+                    return Some((p, q));
+                }
+            }
+        }
+        None
+    }
+
+    /// The checker on interlocked pairs of every generator family (deep comb pockets, spirals, 2-opt
+    /// polygons), property (v) on the smaller ones.
+    #[test]
+    fn every_family_satisfies_the_separator_properties() {
+        let mut checked = 0;
+        for seed in 0..1500 {
+            let Some((p, q)) = family_pair(seed) else {
+                continue;
+            };
+            let v = p.len() + q.len() <= 48;
+            for res in [
+                check_pair_v::<Robust>(&p, &q, v),
+                check_pair::<Exact>(&p, &q),
+            ] {
+                if let Err(e) = res {
+                    panic!(
+                        "seed {seed}: {e}\nP = {:?}\nQ = {:?}",
+                        p.vertices(),
+                        q.vertices()
+                    );
+                }
+            }
+            checked += 1;
+        }
+        assert!(checked >= 300, "{checked}");
+    }
 }
