@@ -1253,6 +1253,13 @@ mod tests {
                     );
                 }
             }
+            // The same pair scaled by 2^60 (exact): the construction and its properties must not
+            // change with the magnitude of the coordinates.
+            let scaled =
+                |v: &[DVec2]| -> Vec<DVec2> { v.iter().map(|&x| x * 2f64.powi(60)).collect() };
+            let (ps, qs) = (poly(&scaled(p.vertices())), poly(&scaled(q.vertices())));
+            let (a, b) = (check_pair::<Robust>(&p, &q), check_pair::<Robust>(&ps, &qs));
+            assert_eq!(a, b, "seed {seed}: the scaled pair differs");
             checked += 1;
         }
         assert!(checked >= 300, "{checked}");
