@@ -26,9 +26,9 @@ use glam::DVec2;
 use polydist_polygon::predicates::{Dist2, Kernel, Orientation, Sign};
 use polydist_polygon::{Feature, SimplePolygon, convex_hull_with};
 
+use crate::brute::scan;
 #[cfg(test)]
 use crate::brute::separation_brute;
-use crate::construct::{vertex_edge, vertex_vertex};
 use crate::error::SeparationError;
 use crate::geodesic::{Hit, first_hit, shortest_path};
 use crate::param::{Affine, Edge, Param};
@@ -538,78 +538,6 @@ fn dist_of(p: &[DVec2], q: &[DVec2], pair: &ClosestPair) -> Dist2 {
     }
 }
 
-/// σ of two small chains by an exact scan of their vertex pairs and vertex–edge pairs (the same
-/// answer, tie-breaking included, as the brute-force twin `separation_brute`): a vertex–edge pair is
-/// compared only when the vertex projects strictly inside the edge (two degree-2 dot signs), since
-/// otherwise its distance is that of a vertex pair already compared, never strictly smaller.
-/// `O(n_p · n_q)`. Both chains must be non-empty.
-fn scan<K: Kernel>(p: &[DVec2], q: &[DVec2]) -> ClosestPair {
-    #[derive(Clone, Copy)]
-    enum Cand {
-        Vv(usize, usize),
-        PvQe(usize, usize),
-        QvPe(usize, usize),
-    }
-    let dist = |c: Cand| match c {
-        Cand::Vv(i, j) => Dist2::PointPoint(p[i], q[j]),
-        Cand::PvQe(i, j) => Dist2::PointSegment(p[i], q[j], q[j + 1]),
-        Cand::QvPe(j, i) => Dist2::PointSegment(q[j], p[i], p[i + 1]),
-    };
-    let inside = |v: DVec2, a: DVec2, b: DVec2| {
-        K::dot_sign(a, v, a, b) == Sign::Positive && K::dot_sign(b, v, b, a) == Sign::Positive
-    };
-    let mut best = Cand::Vv(0, 0);
-    let mut consider = |c: Cand| {
-        if K::cmp_dist2(dist(c), dist(best)) == Ordering::Less {
-            best = c;
-        }
-    };
-    for i in 0..p.len() {
-        for j in 0..q.len() {
-            consider(Cand::Vv(i, j));
-        }
-    }
-    for (i, &v) in p.iter().enumerate() {
-        for (j, e) in q.windows(2).enumerate() {
-            if inside(v, e[0], e[1]) {
-                consider(Cand::PvQe(i, j));
-            }
-        }
-    }
-    for (j, &v) in q.iter().enumerate() {
-        for (i, e) in p.windows(2).enumerate() {
-            if inside(v, e[0], e[1]) {
-                consider(Cand::QvPe(j, i));
-            }
-        }
-    }
-    match best {
-        Cand::Vv(i, j) => vertex_vertex(p[i], q[j], Feature::Vertex(i), Feature::Vertex(j)),
-        Cand::PvQe(i, j) => {
-            let (squared, distance, foot) = vertex_edge(p[i], q[j], q[j + 1]);
-            ClosestPair {
-                distance,
-                squared_distance: squared,
-                point_p: p[i],
-                point_q: foot,
-                feature_p: Feature::Vertex(i),
-                feature_q: Feature::Edge(j),
-            }
-        }
-        Cand::QvPe(j, i) => {
-            let (squared, distance, foot) = vertex_edge(q[j], p[i], p[i + 1]);
-            ClosestPair {
-                distance,
-                squared_distance: squared,
-                point_p: foot,
-                point_q: q[j],
-                feature_p: Feature::Edge(i),
-                feature_q: Feature::Vertex(j),
-            }
-        }
-    }
-}
-
 /// Step 7: `σ(P, Q) = min σ(P_i, Q_i)` in `P`'s and `Q`'s internal features, with the work done.
 ///
 /// Each subproblem is given to section 3 ([`separation_of_chains`]) across the line of its
@@ -661,7 +589,7 @@ pub(crate) fn solve<K: Kernel>(
             }
             None => {
                 stats.subproblems_scanned += 1;
-                scan::<K>(&pcv, &qcv)
+                scan::<K>(&pcv, &qcv, true)
             }
         };
         // Chain features to internal features.
@@ -1355,7 +1283,7 @@ mod tests {
             };
             let p: Vec<DVec2> = (0..1 + rng.index(5)).map(|_| pt(&mut rng)).collect();
             let q: Vec<DVec2> = (0..1 + rng.index(5)).map(|_| pt(&mut rng)).collect();
-            let a = scan::<Robust>(&p, &q);
+            let a = scan::<Robust>(&p, &q, true);
             let b = separation_brute::<Robust>(&p, &q).unwrap();
             assert_eq!(
                 (a.feature_p, a.feature_q),
