@@ -985,35 +985,26 @@ trait CallerMap {
     fn on_edge<K: Kernel>(&self, e: usize, q: DVec2) -> Option<Feature>;
 }
 
-impl CallerMap for ConvexPolygon {
-    fn internal_len(&self) -> usize {
-        self.len()
-    }
-    fn caller_count(&self) -> usize {
-        self.caller_len()
-    }
-    fn source(&self, v: usize) -> usize {
-        self.source_index(v)
-    }
-    fn on_edge<K: Kernel>(&self, e: usize, q: DVec2) -> Option<Feature> {
-        self.caller_feature_on_edge::<K>(e, q)
-    }
+/// Both polygon types name their caller's vertices and edges through the same inherent methods.
+macro_rules! caller_map {
+    ($($t:ty),*) => {$(
+        impl CallerMap for $t {
+            fn internal_len(&self) -> usize {
+                self.len()
+            }
+            fn caller_count(&self) -> usize {
+                self.caller_len()
+            }
+            fn source(&self, v: usize) -> usize {
+                self.source_index(v)
+            }
+            fn on_edge<K: Kernel>(&self, e: usize, q: DVec2) -> Option<Feature> {
+                self.caller_feature_on_edge::<K>(e, q)
+            }
+        }
+    )*};
 }
-
-impl CallerMap for SimplePolygon {
-    fn internal_len(&self) -> usize {
-        self.len()
-    }
-    fn caller_count(&self) -> usize {
-        self.caller_len()
-    }
-    fn source(&self, v: usize) -> usize {
-        self.source_index(v)
-    }
-    fn on_edge<K: Kernel>(&self, e: usize, q: DVec2) -> Option<Feature> {
-        self.caller_feature_on_edge::<K>(e, q)
-    }
-}
+caller_map!(ConvexPolygon, SimplePolygon);
 
 /// A feature of a posed polygon (internal indices of `poly`) as the body's caller feature. `x` is
 /// the other body's realizing point (world frame).
