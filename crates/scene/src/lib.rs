@@ -26,9 +26,10 @@
 //! - answers pairs of polygons as JSON lines ([`batch_pairs`], [`batch_within`]; docs/batch.md);
 //! - draws a run as SVG ([`render_svg`]).
 //!
-//! Every effect but `separation` needs convex bodies ([`SceneError::NeedsConvex`]); `separation` of
-//! a simple body in a pocket of the other (one convex hull inside the other) is reported per frame as
-//! `unsupported` (the containing case of Amato's separator is not built yet), and the run goes on.
+//! Every effect but `separation` needs convex bodies ([`SceneError::NeedsConvex`]); `separation`
+//! answers every pair of disjoint simple bodies (hulls apart, interlocked, pinched, or one in a pocket
+//! of the other); a frame it cannot answer (only under the `Fast` kernel) is reported as
+//! `unsupported`, and the run goes on.
 //!
 //! # Numbers
 //! Posed polygons are rounded coordinates: every decision is exact for them (under the Robust and

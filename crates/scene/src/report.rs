@@ -98,9 +98,9 @@ pub enum Status {
     /// The closed bodies meet (from `separation`, which does not tell touching from overlapping for
     /// simple polygons).
     Intersecting,
-    /// The pair needs an algorithm this version lacks (see `error`): `separation` of a body lying in
-    /// a pocket of the other (one convex hull inside the other) or pinched against it needs the
-    /// containing or pinched case of Amato's separator, not built yet.
+    /// The pair could not be answered (see `error`): `separation` failed, which happens only under
+    /// the `Fast` kernel's inconsistent decisions (every configuration of two disjoint simple bodies
+    /// is built, including one in a pocket of the other).
     Unsupported,
 }
 

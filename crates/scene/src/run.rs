@@ -1187,10 +1187,9 @@ pub(crate) fn eval_frame<K: Kernel>(
 /// [`polydist_separation::separation`]): both bodies as posed simple polygons (a simple body's posed
 /// polygon, or a convex body's posed vertices validated as a simple polygon), features mapped back to
 /// the bodies' caller indices. Disjoint: `out.separation` (status `disjoint` unless a convex effect
-/// sets a finer one); meeting: status `intersecting`; one hull inside the other (or a pinched
-/// channel) without the polygons meeting: status `unsupported` with the error (those cases of Amato's
-/// separator are not built yet); a body without area:
-/// status `invalid`.
+/// sets a finer one); meeting: status `intersecting`; any error of the separation (only under the
+/// `Fast` kernel's inconsistent decisions): status `unsupported` with the error; a body without
+/// area: status `invalid`.
 fn separation_frame<K: Kernel>(
     (ba, pa): (&Body, &Posed),
     (bb, pb): (&Body, &Posed),

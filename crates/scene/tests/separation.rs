@@ -1,7 +1,7 @@
 //! The `separation` effect on simple bodies: answers against the separation crate's brute-force twin
-//! on the posed bodies (the separator route for interlocked combs), the `intersecting` and
-//! `unsupported` (a polygon in a pocket of the other) outcomes (the run goes on), the
-//! counters (only the asked work is done), and the `NeedsConvex` rule for the other effects.
+//! on the posed bodies (the separator route for interlocked combs and for a polygon in a pocket of
+//! the other), the `intersecting` outcome, the counters (only the asked work is done), and the
+//! `NeedsConvex` rule for the other effects.
 
 use glam::DVec2;
 use polydist_polygon::SimplePolygon;
@@ -37,7 +37,7 @@ vertices = [[2, 22], [3, 22], [3, 25], [6, 25], [6, 22], [7, 22], [7, 26], [2, 2
 [[body]]
 id = "pebble"
 kind = "simple"
-# Inside u's pocket: CH(pebble) lies inside CH(u), the containing case, not built yet.
+# Inside u's pocket: CH(pebble) lies inside CH(u), the separator's containing case.
 vertices = [[1, 4], [2, 4], [2, 6], [1, 6]]
 
 [[query]]
@@ -136,18 +136,42 @@ fn separation_frames_match_the_brute_force_and_the_run_goes_on() {
         assert_eq!(s.distance, pair.distance);
         assert_eq!(s.route, "separators");
     }
-    // The pebble in u's pocket: the containing case is reported per frame, and the run goes on.
+    // The pebble in u's pocket (the containing case): answered by the separators, exactly the brute
+    // force's distance (neither body moves).
     let pebble = report
         .pairs
         .iter()
         .find(|p| p.b == "pebble")
         .expect("pair u–pebble");
+    let (u, pb) = (
+        SimplePolygon::try_from(
+            &[
+                [0.0, 0.0],
+                [10.0, 0.0],
+                [10.0, 10.0],
+                [0.0, 10.0],
+                [0.0, 7.0],
+                [6.0, 7.0],
+                [6.0, 3.0],
+                [0.0, 3.0],
+            ][..],
+        )
+        .expect("u"),
+        SimplePolygon::try_from(&[[1.0, 4.0], [2.0, 4.0], [2.0, 6.0], [1.0, 6.0]][..])
+            .expect("pebble"),
+    );
+    let Ok(PolygonSeparation::Separated { pair, .. }) = polygon_separation_brute::<Robust>(&u, &pb)
+    else {
+        panic!("u and the pebble are disjoint");
+    };
     assert!(!pebble.frames.is_empty());
     for f in &pebble.frames {
-        assert_eq!(f.status, Some(Status::Unsupported));
-        assert!(f.error.as_deref().unwrap_or("").contains("separators"));
+        assert_eq!(f.status, Some(Status::Disjoint));
+        let s = f.separation.expect("separation");
+        assert_eq!(s.distance, pair.distance);
+        assert_eq!(s.route, "separators");
     }
-    assert!(pebble.failed && !combs.failed && !ul.failed && report.failed);
+    assert!(!pebble.failed && !combs.failed && !ul.failed && !report.failed);
     // Only the asked work: separation, no convex distance of any kind.
     let c = report.costs;
     assert!(c.separation.calls >= 9);

@@ -82,13 +82,12 @@ pub enum SeparationError {
         /// The caller's index of a vertex where the violation was found.
         index: usize,
     },
-    /// The two simple polygons are disjoint, their convex hulls meet, and the configuration is one
-    /// the separator `S(P, Q)` of Amato's section 2 is not built for yet: one hull contains the other
-    /// (a polygon in a pocket of the other: the cyclic separator of the containing case), or one
-    /// polygon touches the hull of the union in a single vertex (a pinched channel). See
-    /// `docs/algorithms/separator.md`.
+    /// [`separation_of_disjoint`](crate::separation_of_disjoint) was given polygons that are not
+    /// disjoint: one hull contains the other and no pocket of the outer polygon holds the inner
+    /// one, so it lies inside the outer polygon. ([`separation`](crate::separation) checks first and
+    /// reports meeting polygons as `Intersecting`.)
     #[error(
-        "the convex hulls of the two polygons meet and one contains the other (or the channel between them is pinched): this case of Amato's separators is not implemented yet"
+        "one polygon lies inside the other (no pocket of the outer one holds it): the polygons are not disjoint"
     )]
     HullsIntersect,
     /// The search found no admissible vertex pair. With an exact kernel this cannot happen (it would

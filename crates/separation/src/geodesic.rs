@@ -220,7 +220,7 @@ impl<K: Kernel> Funnel<'_, K> {
 }
 
 /// Drops the middle of every three consecutive collinear vertices (exact orientation).
-fn merge_collinear<K: Kernel>(ring: &[DVec2], path: &[usize]) -> Vec<usize> {
+pub(crate) fn merge_collinear<K: Kernel>(ring: &[DVec2], path: &[usize]) -> Vec<usize> {
     let mut out: Vec<usize> = Vec::with_capacity(path.len());
     for &v in path {
         if out.last() == Some(&v) {

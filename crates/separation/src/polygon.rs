@@ -6,8 +6,9 @@
 //! nonintersecting simple polygons" (UIUC report UILU-ENG-92-2248, 1992), section 2: when the convex
 //! hulls `CH(P)` and `CH(Q)` are disjoint, a line separates the polygons and section 3 (the separable
 //! chains, [`separation_of_chains`](crate::separation_of_chains)) applies to the boundaries directly;
-//! otherwise the report builds a separator `S(P, Q)` (built here for the non-containing case:
-//! `separator.rs`, `docs/algorithms/separator.md`).
+//! otherwise the report builds a separator `S(P, Q)` (`separator.rs`,
+//! `docs/algorithms/separator.md`): in the non-containing case, the pinched channel, and the
+//! containing case (one polygon in a pocket of the other).
 //!
 //! # What is built
 //! - [`intersection`]: do the closed polygons meet? Boundaries swept together (Shamos–Hoey), then one
@@ -18,13 +19,9 @@
 //!   whole boundaries, each passed as a closed chain.
 //! - [`separation_brute`](crate::polygon_separation_brute): the `O(nm)` twin.
 //!
-//! - hulls that meet, polygons disjoint, neither hull inside the other: the separator route
-//!   ([`Route::Separators`]).
-//!
-//! # What is not built
-//! One polygon in a pocket of the other (one hull inside the other: the cyclic separator of the
-//! containing case) and a pinched channel get [`SeparationError::HullsIntersect`]. See
-//! `docs/algorithms/separator.md`.
+//! - hulls that meet, polygons disjoint: the separator route ([`Route::Separators`]), whether the
+//!   channel between the facing chains is open, pinched at one vertex, or one polygon lies in a
+//!   pocket of the other (two passes, one per cut of the annulus).
 
 use glam::DVec2;
 use polydist_convex::{Separation, distance_with_hint};
@@ -179,9 +176,8 @@ fn piece(p: &SimplePolygon, e: usize) -> BoundaryPiece {
 /// `K` = `Robust` or `Exact`.
 ///
 /// # Errors
-/// [`SeparationError::HullsIntersect`] when the polygons are disjoint and one convex hull lies inside
-/// the other (the separator's containing case, not built yet) or they pinch at a vertex of the hull of
-/// the union; [`SeparationError::Inconsistent`] only under the `Fast` kernel.
+/// [`SeparationError::Inconsistent`] (and the other errors of [`separation_of_disjoint`]) only under
+/// the `Fast` kernel.
 ///
 /// # Complexity
 /// Disjoint hulls: as [`separation_of_disjoint`]. Hulls that meet: `O(N log N)` for the intersection
@@ -246,8 +242,8 @@ pub fn separation<K: Kernel>(
 /// When the hulls meet, Amato's separator (as in [`separation`], without the intersection sweep).
 ///
 /// # Errors
-/// [`SeparationError::HullsIntersect`] when one hull lies inside the other or the channel is pinched
-/// (the polygons' disjointness is not checked; on meeting polygons the answer is unspecified but no
+/// [`SeparationError::HullsIntersect`] when one polygon lies inside the other (their disjointness
+/// is not checked; on meeting polygons the answer is unspecified, this error or another, but no
 /// panic); [`SeparationError::Inconsistent`] and any error of [`separation_of_chains`] only under
 /// the `Fast` kernel.
 ///
@@ -320,9 +316,8 @@ fn separator_route<K: Kernel>(
     p: &SimplePolygon,
     q: &SimplePolygon,
 ) -> Result<PolygonSeparation, SeparationError> {
-    let built = match separator::build::<K>(p, q)? {
-        Ok(b) => b,
-        Err(_) => return Err(SeparationError::HullsIntersect),
+    let Some(built) = separator::build::<K>(p, q)? else {
+        return Err(SeparationError::HullsIntersect);
     };
     let (pair, stats) = separator::solve::<K>(p, q, &built)?;
     Ok(PolygonSeparation::Separated {

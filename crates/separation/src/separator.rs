@@ -1,7 +1,8 @@
-//! Amato's separator `S(P, Q)` for two disjoint simple polygons whose convex hulls meet, in the
-//! non-containing case (N. M. Amato, UIUC report UILU-ENG-92-2248, 1992, section 2; the
-//! construction of [A92] is only cited there: this is the reconstruction of
-//! `docs/algorithms/separator.md`).
+//! Amato's separator `S(P, Q)` for two disjoint simple polygons whose convex hulls meet (N. M.
+//! Amato, UIUC report UILU-ENG-92-2248, 1992, section 2; the construction of [A92] is only cited
+//! there: this is the reconstruction of `docs/algorithms/separator.md`): the non-containing case,
+//! the pinched channel, and the containing case (one polygon in a pocket of the other, see
+//! [`regions`]).
 //!
 //! Steps (names as in the doc):
 //! 1. **Facing chains.** The hull of `CH(P) ∪ CH(Q)` has exactly two *bridges* (hull edges joining a
@@ -30,19 +31,22 @@ use crate::brute::scan;
 #[cfg(test)]
 use crate::brute::separation_brute;
 use crate::error::SeparationError;
-use crate::geodesic::{Hit, first_hit, shortest_path};
+use crate::geodesic::{Hit, first_hit, merge_collinear, shortest_path};
 use crate::param::{Affine, Edge, Param};
 use crate::result::{ClosestPair, SeparationStats};
 use crate::sigma::separation_of_chains;
-use crate::triangulate::triangulate;
+use crate::triangulate::{Triangulation, triangulate};
 
-/// Why the separator could not be built for a pair whose hulls meet.
+/// Why [`facing`] did not build the region: the other constructions take over.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum Unsupported {
-    /// One hull contains the other (a polygon in a pocket of the other): the cyclic separator of the
-    /// containing case is not built.
-    Containing,
-    /// One polygon touches the hull of the union in a single vertex: `R` is pinched there.
+    /// One hull contains the other: `P`'s when `p_inside`, else `Q`'s (a polygon in a pocket of the
+    /// other).
+    Containing {
+        /// Whether `CH(P) ⊆ CH(Q)`.
+        p_inside: bool,
+    },
+    /// `Q` touches the hull of the union in a single vertex: the polygons are swapped.
     Pinched,
 }
 
@@ -60,6 +64,16 @@ pub(crate) struct Region {
     pub(crate) pb: usize,
     /// Vertices of `P`.
     pub(crate) np: usize,
+    /// The position of `p_t` along the `P` wall: `np` when the wall is all of `P` (pinched and
+    /// containing cases, where `p_b` and `p_t` are two copies of one vertex).
+    pub(crate) top: usize,
+    /// The ring edge of the `Q` wall that is no part of `Q` (the lid of the pocket holding `P`, in
+    /// the containing case): subchains are split there.
+    pub(crate) gap: Option<usize>,
+    /// When `p_b` and `p_t` are one point: a diagonal (a ring vertex of the `P` wall, one of the `Q`
+    /// wall) through a vertex of the geodesic that cuts the weakly simple ring into two strictly
+    /// simple halves (triangulated apart and glued along it).
+    pub(crate) cut: Option<(usize, usize)>,
 }
 
 impl Region {
@@ -75,12 +89,61 @@ impl Region {
 
     /// The position of `P`-ring vertex `r` along `P′`, from `p_b` (0) to `p_t`.
     pub(crate) fn pos_p(&self, r: usize) -> usize {
-        (self.src[r] + self.np - self.pb) % self.np
+        if r == self.pt() {
+            self.top
+        } else {
+            (self.src[r] + self.np - self.pb) % self.np
+        }
     }
 
     /// The position of `p_t` along `P′`.
     pub(crate) fn top_p(&self) -> usize {
-        self.pos_p(self.pt())
+        self.top
+    }
+
+    /// The ring of `R` from the facing chains: `p_b`, `Q`'s vertices `qs` (clockwise on `Q`, from
+    /// `q_b` to `q_t`), `p_t`, then `P` clockwise from `p_t` down to the vertex after `p_b` (all of
+    /// `P` when `p_b = p_t`).
+    fn from_chains(vp: &[DVec2], vq: &[DVec2], pb: usize, pt: usize, qs: &[usize]) -> Region {
+        let np = vp.len();
+        let mut ring = Vec::with_capacity(qs.len() + np + 1);
+        let mut src = Vec::with_capacity(qs.len() + np + 1);
+        ring.push(vp[pb]);
+        src.push(pb);
+        for &j in qs {
+            ring.push(vq[j]);
+            src.push(j);
+        }
+        let qt = ring.len() - 1;
+        let mut i = pt;
+        loop {
+            ring.push(vp[i]);
+            src.push(i);
+            i = (i + np - 1) % np;
+            if i == pb {
+                break;
+            }
+        }
+        let top = if pb == pt { np } else { (pt + np - pb) % np };
+        Region {
+            ring,
+            src,
+            qt,
+            pb,
+            np,
+            top,
+            gap: None,
+            cut: None,
+        }
+    }
+
+    /// The ring index of `P`'s vertex `v` (`v ≠ p_b` when `p_b = p_t`).
+    fn ring_of_p(&self, v: usize) -> usize {
+        if v == self.pb && self.top != self.np {
+            0
+        } else {
+            self.pt() + (self.src[self.pt()] + self.np - v) % self.np
+        }
     }
 
     /// The end points of ring edge `e`.
@@ -114,7 +177,7 @@ fn hull_indices<K: Kernel>(p: &SimplePolygon) -> Option<Vec<usize>> {
 /// Step 1 and 2: the bridges of `CH(P ∪ Q)`, the facing chains and the ring of `R`.
 ///
 /// `O(n + m)` for the hulls and the ring, `O(h log h)` for the hull of the `h` hull vertices.
-pub(crate) fn region<K: Kernel>(
+fn facing<K: Kernel>(
     p: &SimplePolygon,
     q: &SimplePolygon,
 ) -> Result<Result<Region, Unsupported>, SeparationError> {
@@ -151,7 +214,9 @@ pub(crate) fn region<K: Kernel>(
         }
     }
     if bridges == 0 {
-        return Ok(Err(Unsupported::Containing));
+        return Ok(Err(Unsupported::Containing {
+            p_inside: (0..h).all(|i| !tag(i).0),
+        }));
     }
     let (Some((px, qy)), Some((pw, qz)), 2) = (up, down, bridges) else {
         return Err(SeparationError::Inconsistent);
@@ -182,35 +247,387 @@ pub(crate) fn region<K: Kernel>(
         shrink(&hq, vq, qz, vp[hp[pw]]),
     );
     let (pb, qb, qt, pt) = (hp[px], hq[qy], hq[qz], hp[pw]);
-    if pb == pt || qb == qt {
+    if qb == qt {
+        // Q touches the hull of the union at one vertex: the caller swaps the polygons.
         return Ok(Err(Unsupported::Pinched));
     }
+    let nq = vq.len();
+    let qs: Vec<usize> = (0..nq)
+        .map(|k| (qb + nq - k) % nq)
+        .take_while({
+            let mut done = false;
+            move |&j| !core::mem::replace(&mut done, j == qt)
+        })
+        .collect();
+    let mut r = Region::from_chains(vp, vq, pb, pt, &qs);
+    if pb == pt {
+        // Pinched at p_b: cut the ring from a vertex of CH(P) other than p_b.
+        r.cut = Some(pinch_cut::<K>(&r).ok_or(SeparationError::Inconsistent)?);
+    }
+    Ok(Ok(r))
+}
+
+/// The regions whose separators cover every sight between `P` and `Q`, and whether the polygons
+/// were swapped to build them (the caller swaps the answer back).
+///
+/// - Non-containing case: one region (steps 1–2).
+/// - Pinched channel (one polygon touches `CH(P ∪ Q)` at one vertex `v`): one weakly simple region,
+///   `v` twice on its ring (notes 5.1); the polygons are swapped when `Q` is the pinched one.
+/// - Containing case ([`pocket_regions`]): `P` in a pocket of `Q` (or the reverse, swapped).
+///
+/// `Ok(None)` when one polygon lies inside the other (no pocket holds it): the polygons meet, which
+/// the callers rule out ([`separation_of_disjoint`](crate::separation_of_disjoint)'s precondition).
+pub(crate) fn regions<K: Kernel>(
+    p: &SimplePolygon,
+    q: &SimplePolygon,
+) -> Result<Option<(Vec<Region>, bool)>, SeparationError> {
+    match facing::<K>(p, q)? {
+        Ok(r) => Ok(Some((vec![r], false))),
+        Err(Unsupported::Pinched) => match facing::<K>(q, p)? {
+            Ok(r) => Ok(Some((vec![r], true))),
+            Err(_) => Err(SeparationError::Inconsistent),
+        },
+        Err(Unsupported::Containing { p_inside: true }) => {
+            Ok(pocket_regions::<K>(p, q)?.map(|r| (r, false)))
+        }
+        Err(Unsupported::Containing { p_inside: false }) => {
+            Ok(pocket_regions::<K>(q, p)?.map(|r| (r, true)))
+        }
+    }
+}
+
+/// `v` turned by `turn` quarter turns so that direction `turn` becomes `+y` (0: `+y`, 1: `−x`,
+/// 2: `−y`, 3: `+x`). Exact (negations and swaps), and orientation-preserving.
+fn turned(v: DVec2, turn: u8) -> DVec2 {
+    match turn % 4 {
+        0 => v,
+        1 => DVec2::new(v.y, -v.x),
+        2 => -v,
+        _ => DVec2::new(-v.y, v.x),
+    }
+}
+
+/// The index of the point of `pts` (a non-empty iterator of `(index, point)`) that is greatest in
+/// direction `turn`, ties broken by the turned `x`: a vertex of the points' convex hull.
+fn extreme(pts: impl Iterator<Item = (usize, DVec2)>, turn: u8) -> Option<usize> {
+    pts.map(|(i, v)| (i, turned(v, turn)))
+        .max_by(|a, b| {
+            a.1.y
+                .total_cmp(&b.1.y)
+                .then(a.1.x.total_cmp(&b.1.x))
+                .then(b.0.cmp(&a.0))
+        })
+        .map(|(i, _)| i)
+}
+
+/// A vertex of the simple polygon `outer` that sees `u` (a point inside it, greatest of a set `S`
+/// in direction `turn`, with `S` inside `outer` and its hull below `u`'s level) along an open
+/// segment lying strictly beyond `u`'s level: the classical bridge of a hole to its outer boundary
+/// (as in ear-clipping with holes). The ray from `u` in direction `turn` first meets `outer` at a
+/// vertex (the answer) or inside an edge `(a, b)` at `h`; then the answer is, among `outer`'s vertices
+/// in the closed triangle `(u, h, w)` (`w` the end of the edge farther along the ray), the one of
+/// least angle to the ray, the nearest on ties. Every point of the triangle but `u` lies strictly
+/// beyond `u`'s level, so `S` does not obstruct; no edge of `outer` crosses the chosen segment, since
+/// such an edge would have an end inside the triangle at a smaller angle.
+///
+/// Every decision is an orientation or a comparison of input coordinates (turned exactly);
+/// `h` is never constructed. `O(n)`. `None` only under inconsistent signs (Fast) or when `u` is
+/// not inside `outer`.
+fn cut_target<K: Kernel>(outer: &[DVec2], u: DVec2, turn: u8) -> Option<usize> {
+    let n = outer.len();
+    let t = |i: usize| turned(outer[i % n], turn);
+    let u = turned(u, turn);
+    #[derive(Clone, Copy)]
+    enum Hit {
+        Vertex(usize),
+        // An edge (left end, right end) crossing the ray's line strictly between its ends.
+        Edge(usize, usize),
+    }
+    let below = |a: Hit, b: Hit| -> bool {
+        // Whether `a`'s point on the ray is strictly below `b`'s (they never cross).
+        match (a, b) {
+            (Hit::Vertex(i), Hit::Vertex(j)) => t(i).y < t(j).y,
+            (Hit::Vertex(i), Hit::Edge(l, r)) => {
+                K::orient(t(l), t(r), t(i)) == Orientation::Clockwise
+            }
+            (Hit::Edge(l, r), Hit::Vertex(j)) => {
+                K::orient(t(l), t(r), t(j)) == Orientation::CounterClockwise
+            }
+            (Hit::Edge(l1, r1), Hit::Edge(l2, r2)) => {
+                // Two edges of a simple polygon over a common x range do not cross: an end of one
+                // inside the other's range decides, unless it is a shared end; then the right ends.
+                let (a1, b1, a2, b2) = (t(l1), t(r1), t(l2), t(r2));
+                let by_right_ends = || {
+                    if b1.x <= b2.x {
+                        K::orient(a2, b2, b1) == Orientation::Clockwise
+                    } else {
+                        K::orient(a1, b1, b2) == Orientation::CounterClockwise
+                    }
+                };
+                if a1.x >= a2.x {
+                    match K::orient(a2, b2, a1) {
+                        Orientation::Clockwise => true,
+                        Orientation::CounterClockwise => false,
+                        Orientation::Collinear => by_right_ends(),
+                    }
+                } else {
+                    match K::orient(a1, b1, a2) {
+                        Orientation::CounterClockwise => true,
+                        Orientation::Clockwise => false,
+                        Orientation::Collinear => by_right_ends(),
+                    }
+                }
+            }
+        }
+    };
+    let mut first: Option<Hit> = None;
+    for i in 0..n {
+        let (a, b) = (t(i), t(i + 1));
+        let mut cand = None;
+        if a.x == u.x && a.y > u.y {
+            cand = Some(Hit::Vertex(i));
+        } else if (a.x < u.x) != (b.x < u.x) && a.x != u.x && b.x != u.x {
+            let (l, r) = if a.x < b.x {
+                (i, (i + 1) % n)
+            } else {
+                ((i + 1) % n, i)
+            };
+            if K::orient(t(l), t(r), u) == Orientation::Clockwise {
+                cand = Some(Hit::Edge(l, r));
+            }
+        }
+        if let Some(c) = cand
+            && first.is_none_or(|f| below(c, f))
+        {
+            first = Some(c);
+        }
+    }
+    let (l, r) = match first? {
+        Hit::Vertex(i) => return Some(i),
+        Hit::Edge(l, r) => (l, r),
+    };
+    let w = if t(r).y >= t(l).y { r } else { l };
+    let right = t(w).x > u.x;
+    let toward_h = if right {
+        Orientation::CounterClockwise
+    } else {
+        Orientation::Clockwise
+    };
+    let mut best = w;
+    for z in 0..n {
+        let p = t(z);
+        if z == w || (p.x > u.x) != right || p.x == u.x {
+            continue;
+        }
+        if K::orient(t(l), t(r), p) == Orientation::CounterClockwise {
+            continue;
+        }
+        let s = K::orient(u, t(w), p);
+        let inside = s == toward_h || (s == Orientation::Collinear && p.y <= t(w).y);
+        if !inside {
+            continue;
+        }
+        let o = K::orient(u, t(best), p);
+        // Nearer the ray (on `h`'s side of the line through `best`), or on that line and nearer.
+        let better = o == toward_h || (o == Orientation::Collinear && p.y < t(best).y);
+        if better {
+            best = z;
+        }
+    }
+    Some(best)
+}
+
+/// The cut of a pinched ring (`p_b = p_t = v`): from the vertex `u ≠ v` of `P` greatest in one of
+/// the four axis directions (a vertex of `CH(P)`, so of the geodesic, which is the boundary of `P`'s
+/// relative hull) to the vertex of the outer boundary `v, Q′, v` that [`cut_target`] finds. `v` is
+/// not beyond `u`'s level, so the cut never ends there.
+fn pinch_cut<K: Kernel>(r: &Region) -> Option<(usize, usize)> {
+    let n = r.ring.len();
+    let outer = &r.ring[..=r.qt];
+    for turn in 0..4 {
+        let u = extreme((r.pt()..n).map(|i| (i, r.ring[i])), turn)?;
+        if u == r.pt() {
+            continue;
+        }
+        let w = cut_target::<K>(outer, r.ring[u], turn)?;
+        return (w != 0).then_some((u, w));
+    }
+    None
+}
+
+/// The containing case (notes 5.2): `CH(P) ⊆ CH(Q)`, so `P` lies in a pocket `K` of `Q` (closed by
+/// a lid `(A, B)`, a hull edge of `Q` that is no edge of `Q`) or inside `Q` (`None`: the polygons
+/// meet).
+///
+/// - `P` touches the lid (some vertices on it): the channel runs from the last of them along the
+///   lid, `p_b`, to the first, `p_t`, with the bridges on the lid: the non-containing layout, pinched
+///   when there is one such vertex.
+/// - Otherwise `R = K \ P` is an annulus, and every sight from `P` to `∂K` misses one of two cuts:
+///   `c_T` from `P`'s top vertex `p_top` up to a vertex of `∂K`, `c_B` from its bottom vertex down
+///   (both by [`cut_target`]). `c_T` lies strictly above `P`'s top level but for `p_top`, `c_B`
+///   strictly below its bottom level; a sight from `p ∈ P` meeting `c_T` at a point other than `p`
+///   rises from then on, so it never comes back down to `c_B`. So two regions: the annulus cut along
+///   `c_T` (a weakly simple ring: `p_top` and `c_T`'s other end twice) and the annulus cut along
+///   `c_B`; each is triangulated in two halves split by the other cut, and `σ` is the least over the
+///   subproblems of both. The lid is a ring edge of the `Q` wall, the region's `gap`.
+///
+/// `O(n + m)`.
+fn pocket_regions<K: Kernel>(
+    p: &SimplePolygon,
+    q: &SimplePolygon,
+) -> Result<Option<Vec<Region>>, SeparationError> {
+    let hq = hull_indices::<K>(q).ok_or(SeparationError::Inconsistent)?;
+    let (vp, vq) = (p.vertices(), q.vertices());
     let (np, nq) = (vp.len(), vq.len());
-    let mut ring = vec![vp[pb]];
-    let mut src = vec![pb];
-    let mut j = qb;
-    loop {
-        ring.push(vq[j]);
-        src.push(j);
-        if j == qt {
+    let top = extreme(vp.iter().copied().enumerate(), 0).ok_or(SeparationError::Inconsistent)?;
+    let x = vp[top];
+    // The pocket holding P: the lid whose pocket (A, A + 1, …, B, closed by the lid) holds `x`, by
+    // the parity of the crossings of a rightward ray (half-open in y; exact side tests). `x` on the
+    // lid puts P in that pocket.
+    // The lids: consecutive vertices of Q on the hull's boundary (collinear ones included: Q's
+    // edges along a hull edge are walls of Q, and a chain touching the hull edge between two
+    // notches splits them into two pockets) that are not consecutive on Q.
+    let h = hq.len();
+    let mut lids = Vec::new();
+    for i in 0..h {
+        let (a0, b0) = (hq[i], hq[(i + 1) % h]);
+        let mut last = a0;
+        let mut j = a0;
+        for _ in 0..nq {
+            j = (j + 1) % nq;
+            if j == b0 || K::orient(vq[a0], vq[b0], vq[j]) == Orientation::Collinear {
+                if (last + 1) % nq != j {
+                    lids.push((last, j));
+                }
+                last = j;
+            }
+            if j == b0 {
+                break;
+            }
+        }
+    }
+    let mut lid = None;
+    for (a, b) in lids {
+        let mut inside = false;
+        let mut j = a;
+        for _ in 0..nq {
+            let k = if j == b { a } else { (j + 1) % nq };
+            let (c, d) = (vq[j], vq[k]);
+            let o = K::orient(c, d, x);
+            if o == Orientation::Collinear && K::dot_sign(x, c, x, d) != Sign::Positive {
+                // On the pocket's boundary: on its lid, since P and Q are disjoint.
+                inside = true;
+                break;
+            }
+            if (c.y > x.y) != (d.y > x.y) {
+                match (o, d.y > c.y) {
+                    (Orientation::CounterClockwise, true) | (Orientation::Clockwise, false) => {
+                        inside = !inside;
+                    }
+                    _ => {}
+                }
+            }
+            if j == b {
+                break;
+            }
+            j = k;
+        }
+        if inside {
+            lid = Some((a, b));
             break;
         }
-        j = (j + nq - 1) % nq;
     }
-    let qt_ring = ring.len() - 1;
-    let mut i = pt;
-    while i != pb {
-        ring.push(vp[i]);
-        src.push(i);
-        i = (i + np - 1) % np;
+    let Some((a, b)) = lid else {
+        return Ok(None);
+    };
+    // Q clockwise from B to A: the pocket's wall, counter-clockwise around K.
+    let chain: Vec<usize> = (0..nq)
+        .map(|k| (b + nq - k) % nq)
+        .take_while({
+            let mut done = false;
+            move |&j| !core::mem::replace(&mut done, j == a)
+        })
+        .collect();
+    let on_lid: Vec<usize> = (0..np)
+        .filter(|&i| K::orient(vq[a], vq[b], vp[i]) == Orientation::Collinear)
+        .collect();
+    if !on_lid.is_empty() {
+        // Along the lid from A to B: p_t is the first of P's vertices on it, p_b the last.
+        let along = |i: &usize, j: &usize| match K::dot_sign(vp[*i], vp[*j], vq[a], vq[b]) {
+            Sign::Positive => Ordering::Less,
+            Sign::Negative => Ordering::Greater,
+            Sign::Zero => Ordering::Equal,
+        };
+        let pt = on_lid.iter().copied().min_by(along);
+        let pb = on_lid.iter().copied().max_by(along);
+        let (Some(pb), Some(pt)) = (pb, pt) else {
+            return Err(SeparationError::Inconsistent);
+        };
+        let mut r = Region::from_chains(vp, vq, pb, pt, &chain);
+        if pb == pt {
+            r.cut = Some(pinch_cut::<K>(&r).ok_or(SeparationError::Inconsistent)?);
+        }
+        return Ok(Some(vec![r]));
     }
-    Ok(Ok(Region {
-        ring,
-        src,
-        qt: qt_ring,
-        pb,
-        np,
-    }))
+    // The annulus: K's ring counter-clockwise is the lid A → B, then the chain from B down to A + 1.
+    let kq: Vec<usize> = core::iter::once(a)
+        .chain(chain[..chain.len() - 1].iter().copied())
+        .collect();
+    let kp: Vec<DVec2> = kq.iter().map(|&j| vq[j]).collect();
+    let bottom = extreme(vp.iter().copied().enumerate(), 2).ok_or(SeparationError::Inconsistent)?;
+    let vt = cut_target::<K>(&kp, vp[top], 0).ok_or(SeparationError::Inconsistent)?;
+    let vb = cut_target::<K>(&kp, vp[bottom], 2).ok_or(SeparationError::Inconsistent)?;
+    if vt == vb || top == bottom {
+        return Err(SeparationError::Inconsistent);
+    }
+    let make = |pv: usize, kv: usize, other_p: usize, other_k: usize| {
+        let qs: Vec<usize> = (0..=kq.len()).map(|s| kq[(kv + s) % kq.len()]).collect();
+        let mut r = Region::from_chains(vp, vq, pv, pv, &qs);
+        r.gap = (1..r.qt).find(|&g| r.src[g] == a && r.src[g + 1] == b);
+        let w = (2..r.qt).find(|&g| r.src[g] == kq[other_k]);
+        r.cut = w.map(|w| (r.ring_of_p(other_p), w));
+        r.cut.map(|_| r).ok_or(SeparationError::Inconsistent)
+    };
+    Ok(Some(vec![
+        make(top, vt, bottom, vb)?,
+        make(bottom, vb, top, vt)?,
+    ]))
+}
+
+/// Triangulates the weakly simple ring of a pinched or containing region through its cut `(u, w)`:
+/// the two strictly simple halves `w..=u` and `u..=w` (around the ring) are triangulated apart and
+/// their triangles glued along the cut, which is then a diagonal. The geodesic from `p_b` (0) to
+/// `p_t` passes through `u` (a vertex of `CH(P)`, on the boundary of `P`'s relative hull, which the
+/// geodesic is; and the cut lies beyond `u`'s level, which the geodesic never passes): it is the
+/// shortest path from `p_b` to `u` in the second half followed by the one from `u` to `p_t` in the
+/// first. `O(N log N)` as [`triangulate`], `O(N)` for the paths.
+fn halves<K: Kernel>(r: &Region, u: usize, w: usize) -> Option<(Triangulation, Vec<usize>)> {
+    let (ring, n, t) = (&r.ring, r.ring.len(), r.pt());
+    if !(1..=r.qt).contains(&w) || !(t + 1..n).contains(&u) {
+        return None;
+    }
+    let h1: Vec<usize> = (w..=u).collect();
+    let h2: Vec<usize> = (u..n).chain(0..=w).collect();
+    let pts = |h: &[usize]| h.iter().map(|&i| ring[i]).collect::<Vec<DVec2>>();
+    let (r1, r2) = (pts(&h1), pts(&h2));
+    let (t1, t2) = (triangulate::<K>(&r1).ok()?, triangulate::<K>(&r2).ok()?);
+    let mut triangles = Vec::with_capacity(n - 2);
+    for (h, tr) in [(&h1, &t1), (&h2, &t2)] {
+        triangles.extend(
+            tr.triangles()
+                .iter()
+                .map(|c| c.map(|i| h[i as usize] as u32)),
+        );
+    }
+    let tri = Triangulation::glue(n, triangles).ok()?;
+    let first = shortest_path::<K>(&t2, &r2, n - u, 0);
+    let second = shortest_path::<K>(&t1, &r1, u - w, t - w);
+    let path: Vec<usize> = first
+        .iter()
+        .map(|&i| h2[i])
+        .chain(second.iter().skip(1).map(|&i| h1[i]))
+        .collect();
+    Some((tri, merge_collinear::<K>(ring, &path)))
 }
 
 /// An end of an extended run: the run's own vertex (no arm), or the first boundary point its arm
@@ -297,17 +714,54 @@ fn interval(r: &Region, s: &Seg, line: &Edge) -> (Param, Param) {
     (lo, hi)
 }
 
-/// Whether the extended runs `s` and `t` meet (closed segments). Exact, degree ≤ 4.
+/// Which copy of the cut an end lies on, in a weakly simple region (`p_b` and `p_t` one point):
+/// `Some(false)` on `p_b`'s side (`p_b` itself, and in the containing case the cut's other end
+/// `q_b` and the ring edge `p_b → q_b`), `Some(true)` on `p_t`'s side; `None` elsewhere or when the
+/// ring is strictly simple. Two such ends on opposite copies are different points of the cut
+/// region even where they coincide in the plane.
+fn copy_side(r: &Region, x: End, run_vertex: usize) -> Option<bool> {
+    let pt = r.pt();
+    if r.ring[0] != r.ring[pt] {
+        return None;
+    }
+    let annulus = r.ring[1] == r.ring[r.qt];
+    match x {
+        End::Run if run_vertex == 0 => Some(false),
+        End::Run if run_vertex == pt => Some(true),
+        End::Vertex(0) => Some(false),
+        End::Vertex(v) if v == pt => Some(true),
+        End::Vertex(1) | End::Edge(0) if annulus => Some(false),
+        End::Vertex(v) | End::Edge(v) if annulus && v == r.qt => Some(true),
+        _ => None,
+    }
+}
+
+/// Whether the extended runs `s` and `t` meet (closed segments) in the region `R` (cut open along
+/// its cut when `R` is weakly simple: meeting only at a point of the cut reached from its two
+/// copies is not meeting). Exact, degree ≤ 4.
 pub(crate) fn meets<K: Kernel>(r: &Region, s: &Seg, t: &Seg) -> bool {
     let (ls, lt) = (s.line(r), t.line(r));
     let (is, it) = (interval(r, s, &ls), interval(r, t, &lt));
     let within = |line: &Edge, (lo, hi): (Param, Param), x: Param| {
         line.cmp::<K>(&lo, &x) != Ordering::Greater && line.cmp::<K>(&x, &hi) != Ordering::Greater
     };
+    // The copy of the cut that an end of `x` at parameter `at` on `line` lies on, if any.
+    let side_at = |x: &Seg, line: &Edge, at: &Param| {
+        [(x.bottom, x.lo, false), (x.top, x.hi, true)]
+            .into_iter()
+            .find_map(|(e, v, top)| {
+                let side = copy_side(r, e, v)?;
+                let p = param(line, x.locus(r, top));
+                (line.cmp::<K>(&p, at) == Ordering::Equal).then_some(side)
+            })
+    };
+    let across = |a: Option<bool>, b: Option<bool>| matches!((a, b), (Some(x), Some(y)) if x != y);
     if K::cross_sign(ls.a, ls.b, lt.a, lt.b) != Sign::Zero {
         let on_s = param(&ls, Locus::Cross(lt.a, lt.b));
         let on_t = param(&lt, Locus::Cross(ls.a, ls.b));
-        return within(&ls, is, on_s) && within(&lt, it, on_t);
+        return within(&ls, is, on_s)
+            && within(&lt, it, on_t)
+            && !across(side_at(s, &ls, &on_s), side_at(t, &lt, &on_t));
     }
     if K::orient(ls.a, ls.b, lt.a) != Orientation::Collinear {
         return false;
@@ -327,7 +781,11 @@ pub(crate) fn meets<K: Kernel>(r: &Region, s: &Seg, t: &Seg) -> bool {
     } else {
         b
     };
-    ls.cmp::<K>(&lo, &hi) != Ordering::Greater
+    match ls.cmp::<K>(&lo, &hi) {
+        Ordering::Greater => false,
+        Ordering::Less => true,
+        Ordering::Equal => !across(side_at(s, &ls, &lo), side_at(t, &ls, &lo)),
+    }
 }
 
 /// A built separator: the region, the extended runs, and the kept ones.
@@ -381,17 +839,40 @@ fn highest(c: impl IntoIterator<Item = Option<(usize, usize)>>) -> Option<(usize
         .max_by(|x, y| x.1.cmp(&y.1).then(x.0.cmp(&y.0)))
 }
 
-/// Steps 2–6: the separator and the subchains. `Ok(Err(_))` for configurations not built.
+/// The separators of every region of [`regions`], and whether the polygons were swapped.
+#[derive(Clone, Debug)]
+pub(crate) struct Plan {
+    /// One pass per region: one, or two in the containing case.
+    pub(crate) passes: Vec<Built>,
+    /// Whether `P` and `Q` were swapped to build the regions.
+    pub(crate) swapped: bool,
+}
+
+/// Steps 1–6 for every region. `None` when one polygon lies inside the other (they meet).
 pub(crate) fn build<K: Kernel>(
     p: &SimplePolygon,
     q: &SimplePolygon,
-) -> Result<Result<Built, Unsupported>, SeparationError> {
-    let region = match region::<K>(p, q)? {
-        Ok(r) => r,
-        Err(u) => return Ok(Err(u)),
+) -> Result<Option<Plan>, SeparationError> {
+    let Some((rs, swapped)) = regions::<K>(p, q)? else {
+        return Ok(None);
     };
-    let tri = triangulate::<K>(&region.ring).map_err(|_| SeparationError::Inconsistent)?;
-    let path = shortest_path::<K>(&tri, &region.ring, 0, region.pt());
+    let passes = rs
+        .into_iter()
+        .map(build_region::<K>)
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(Some(Plan { passes, swapped }))
+}
+
+/// Steps 3–6 in one region: the separator and the subchains.
+pub(crate) fn build_region<K: Kernel>(region: Region) -> Result<Built, SeparationError> {
+    let (tri, path) = match region.cut {
+        None => {
+            let tri = triangulate::<K>(&region.ring).map_err(|_| SeparationError::Inconsistent)?;
+            let path = shortest_path::<K>(&tri, &region.ring, 0, region.pt());
+            (tri, path)
+        }
+        Some((u, w)) => halves::<K>(&region, u, w).ok_or(SeparationError::Inconsistent)?,
+    };
     if path.len() < 2 || path[0] != 0 || path[path.len() - 1] != region.pt() {
         return Err(SeparationError::Inconsistent);
     }
@@ -510,14 +991,14 @@ pub(crate) fn build<K: Kernel>(
         };
         sub.push((prange, qrange));
     }
-    Ok(Ok(Built {
+    Ok(Built {
         region,
         runs,
         kept,
         sub,
         cuts: pc.iter().copied().zip(qc.iter().copied()).collect(),
         cut_fallbacks,
-    }))
+    })
 }
 
 /// A candidate pair in internal features of `P` and `Q`.
@@ -538,84 +1019,118 @@ fn dist_of(p: &[DVec2], q: &[DVec2], pair: &ClosestPair) -> Dist2 {
     }
 }
 
-/// Step 7: `σ(P, Q) = min σ(P_i, Q_i)` in `P`'s and `Q`'s internal features, with the work done.
+/// Step 7: `σ(P, Q) = min σ(P_i, Q_i)` over the subproblems of every pass, in `P`'s and `Q`'s
+/// internal features, with the work done.
 ///
 /// Each subproblem is given to section 3 ([`separation_of_chains`]) across the line of its
 /// segment when that line separates the subchains with at most one of them touching it; otherwise
 /// (the line of `l_i` touches both chains, which is the rule, not the exception, since `l_i` runs
-/// from one wall to the other) the subproblem is scanned exactly in `O(|P_i| · |Q_i|)`.
+/// from one wall to the other) the subproblem is scanned exactly in `O(|P_i| · |Q_i|)`. A `Q`
+/// subchain that spans the region's gap (a pocket's lid, no part of `Q`) is split there.
 pub(crate) fn solve<K: Kernel>(
     p: &SimplePolygon,
     q: &SimplePolygon,
-    b: &Built,
+    plan: &Plan,
 ) -> Result<(ClosestPair, SeparationStats), SeparationError> {
+    let (p, q) = if plan.swapped { (q, p) } else { (p, q) };
+    let mut stats = SeparationStats::default();
+    let mut best: Option<(ClosestPair, Dist2)> = None;
+    for b in &plan.passes {
+        solve_pass::<K>(p, q, b, &mut stats, &mut best);
+    }
+    let (pair, _) = best.ok_or(SeparationError::Inconsistent)?;
+    let pair = if plan.swapped {
+        ClosestPair {
+            point_p: pair.point_q,
+            point_q: pair.point_p,
+            feature_p: pair.feature_q,
+            feature_q: pair.feature_p,
+            ..pair
+        }
+    } else {
+        pair
+    };
+    Ok((pair, stats))
+}
+
+/// The subproblems of one pass, folded into `best`.
+fn solve_pass<K: Kernel>(
+    p: &SimplePolygon,
+    q: &SimplePolygon,
+    b: &Built,
+    stats: &mut SeparationStats,
+    best: &mut Option<(ClosestPair, Dist2)>,
+) {
     let (vp, vq) = (p.vertices(), q.vertices());
     let r = &b.region;
-    let mut stats = SeparationStats {
-        separator_segments: b.kept.len(),
-        cut_fallbacks: b.cut_fallbacks,
-        ..SeparationStats::default()
-    };
-    let mut best: Option<(ClosestPair, Dist2)> = None;
+    stats.separator_segments += b.kept.len();
+    stats.cut_fallbacks += b.cut_fallbacks;
     let (mut pcv, mut qcv) = (Vec::new(), Vec::new());
-    for (i, &((plo, phi), (qlo, qhi))) in b.sub.iter().enumerate() {
-        pcv.clear();
-        pcv.extend((plo..=phi).map(|k| vp[(r.pb + k) % r.np]));
-        qcv.clear();
-        qcv.extend((qlo..=qhi).map(|k| r.ring[k]));
-        stats.subproblem_vertices += pcv.len() + qcv.len();
-        let s = &b.runs[b.kept[i]];
-        let (a, c) = (r.ring[s.lo], r.ring[s.hi]);
-        // Both subchains hold a vertex defining the line (known from the indices): section 3 would
-        // reject it (`BothChainsTouchLine`) after its exact side tests, so skip the attempt.
-        let holds = |v: usize| {
-            if r.is_p(v) {
-                (plo..=phi).contains(&r.pos_p(v))
+    for (i, &((plo, phi), (qlo_all, qhi_all))) in b.sub.iter().enumerate() {
+        let parts = match r.gap {
+            Some(g) if qlo_all <= g && g < qhi_all => [(qlo_all, g), (g + 1, qhi_all)],
+            _ => [(qlo_all, qhi_all), (1, 0)],
+        };
+        for (qlo, qhi) in parts {
+            if qlo > qhi {
+                continue;
+            }
+            pcv.clear();
+            pcv.extend((plo..=phi).map(|k| vp[(r.pb + k) % r.np]));
+            qcv.clear();
+            qcv.extend((qlo..=qhi).map(|k| r.ring[k]));
+            stats.subproblem_vertices += pcv.len() + qcv.len();
+            let s = &b.runs[b.kept[i]];
+            let (a, c) = (r.ring[s.lo], r.ring[s.hi]);
+            // Both subchains hold a vertex defining the line (known from the indices): section 3
+            // would reject it (`BothChainsTouchLine`) after its exact side tests, so skip the attempt.
+            let holds = |v: usize| {
+                if r.is_p(v) {
+                    (plo..=phi).contains(&r.pos_p(v))
+                } else {
+                    (qlo..=qhi).contains(&v)
+                }
+            };
+            let both_touch = [s.lo, s.hi].iter().any(|&v| r.is_p(v) && holds(v))
+                && [s.lo, s.hi].iter().any(|&v| !r.is_p(v) && holds(v));
+            let section3 = if both_touch {
+                None
             } else {
-                (qlo..=qhi).contains(&v)
+                separation_of_chains::<K>(&pcv, &qcv, a, c).ok()
+            };
+            let pair = match section3 {
+                Some(sep) => {
+                    stats.subproblems_section3 += 1;
+                    sep.pair
+                }
+                None => {
+                    stats.subproblems_scanned += 1;
+                    scan::<K>(&pcv, &qcv, true)
+                }
+            };
+            // Chain features to internal features.
+            let fp = match pair.feature_p {
+                Feature::Vertex(k) => Feature::Vertex((r.pb + plo + k) % r.np),
+                Feature::Edge(k) => Feature::Edge((r.pb + plo + k) % r.np),
+            };
+            let fq = match pair.feature_q {
+                Feature::Vertex(k) => Feature::Vertex(r.src[qlo + k]),
+                Feature::Edge(k) => Feature::Edge(r.src[qlo + k + 1]),
+            };
+            let pair = ClosestPair {
+                feature_p: fp,
+                feature_q: fq,
+                ..pair
+            };
+            let d = dist_of(vp, vq, &pair);
+            if best
+                .as_ref()
+                .is_none_or(|(_, bd)| K::cmp_dist2(d, *bd) == Ordering::Less)
+            {
+                *best = Some((pair, d));
             }
-        };
-        let both_touch = [s.lo, s.hi].iter().any(|&v| r.is_p(v) && holds(v))
-            && [s.lo, s.hi].iter().any(|&v| !r.is_p(v) && holds(v));
-        let section3 = if both_touch {
-            None
-        } else {
-            separation_of_chains::<K>(&pcv, &qcv, a, c).ok()
-        };
-        let pair = match section3 {
-            Some(sep) => {
-                stats.subproblems_section3 += 1;
-                sep.pair
-            }
-            None => {
-                stats.subproblems_scanned += 1;
-                scan::<K>(&pcv, &qcv, true)
-            }
-        };
-        // Chain features to internal features.
-        let fp = match pair.feature_p {
-            Feature::Vertex(k) => Feature::Vertex((r.pb + plo + k) % r.np),
-            Feature::Edge(k) => Feature::Edge((r.pb + plo + k) % r.np),
-        };
-        let fq = match pair.feature_q {
-            Feature::Vertex(k) => Feature::Vertex(r.src[qlo + k]),
-            Feature::Edge(k) => Feature::Edge(r.src[qlo + k + 1]),
-        };
-        let pair = ClosestPair {
-            feature_p: fp,
-            feature_q: fq,
-            ..pair
-        };
-        let d = dist_of(vp, vq, &pair);
-        if best
-            .as_ref()
-            .is_none_or(|(_, bd)| K::cmp_dist2(d, *bd) == Ordering::Less)
-        {
-            best = Some((pair, d));
         }
     }
-    best.map(|(pair, _)| (pair, stats))
-        .ok_or(SeparationError::Inconsistent)
 }
 
 #[cfg(test)]
@@ -762,7 +1277,18 @@ mod tests {
         let (lo, hi) = interval(r, s, &line);
         if K::orient(line.a, line.b, w) == Orientation::Collinear {
             let t = param(&line, Locus::Point(w));
-            return line.cmp::<K>(&lo, &t) != Ordering::Greater
+            // In a weakly simple region, `w` at an end of `s` on the other copy of the cut is
+            // another point of the cut region (seen, if at all, through its own copy's angle).
+            let w_side = copy_side(r, End::Vertex(wr), wr);
+            let other_copy =
+                [(s.bottom, s.lo, lo), (s.top, s.hi, hi)]
+                    .into_iter()
+                    .any(|(e, v, at)| {
+                        line.cmp::<K>(&at, &t) == Ordering::Equal
+                            && matches!((copy_side(r, e, v), w_side), (Some(a), Some(b)) if a != b)
+                    });
+            return !other_copy
+                && line.cmp::<K>(&lo, &t) != Ordering::Greater
                 && line.cmp::<K>(&t, &hi) != Ordering::Greater;
         }
         // The cone at w: n(y) = cross(next − w, y − w), p(y) = cross(y − w, prev − w).
@@ -857,16 +1383,103 @@ mod tests {
         check_pair_v::<K>(p, q, false)
     }
 
-    /// [`check_pair`], with the exact check of property (v) for vertices when `check_v`.
+    /// [`check_pair`], with the exact checks of property (v) and of every vertex–vertex sight when
+    /// `check_v`.
     fn check_pair_v<K: Kernel>(
         p: &SimplePolygon,
         q: &SimplePolygon,
         check_v: bool,
     ) -> Result<usize, String> {
-        let b = match build::<K>(p, q).map_err(|e| format!("{e}"))? {
-            Ok(b) => b,
-            Err(u) => return Err(format!("unsupported: {u:?}")),
-        };
+        check_pair_cover::<K>(p, q, check_v).map(|(m, _)| m)
+    }
+
+    /// [`check_pair`], with the exact check of property (v) for vertices when `check_v`; returns
+    /// the number of kept segments and, when `check_v`, per pass the number of vertex–vertex sights
+    /// that only this pass holds.
+    fn check_pair_cover<K: Kernel>(
+        p: &SimplePolygon,
+        q: &SimplePolygon,
+        check_v: bool,
+    ) -> Result<(usize, Vec<usize>), String> {
+        let plan = build::<K>(p, q)
+            .map_err(|e| format!("{e}"))?
+            .ok_or("no region: one polygon inside the other")?;
+        let (pp, qq) = if plan.swapped { (q, p) } else { (p, q) };
+        let (cp, cq) = (closed_chain(pp), closed_chain(qq));
+        let brute = separation_brute::<K>(&cp, &cq).map_err(|e| format!("{e}"))?;
+        let mut m = 0;
+        let mut cover = Vec::new();
+        let mut sights_only = Vec::new();
+        for (k, b) in plan.passes.iter().enumerate() {
+            let (mk, cov) = check_pass::<K>(pp, qq, b, check_v, &brute)
+                .map_err(|e| format!("pass {k}: {e}"))?;
+            m += mk;
+            cover.push(cov);
+        }
+        // Every vertex–vertex sight is held by some pass (in the containing case, each pass holds
+        // those that miss its cut, and every sight misses one of the two cuts); `cover` counts, per
+        // pass, the sights only that pass holds.
+        if check_v {
+            let (vp, vq) = (pp.vertices(), qq.vertices());
+            let mut only = vec![0; plan.passes.len()];
+            for i in 0..vp.len() {
+                for j in 0..vq.len() {
+                    if !sight::<K>(vp, vq, i, j) {
+                        continue;
+                    }
+                    let held: Vec<usize> = (0..plan.passes.len())
+                        .filter(|&k| {
+                            pass_holds(
+                                &plan.passes[k],
+                                vp.len(),
+                                vq.len(),
+                                Feature::Vertex(i),
+                                Feature::Vertex(j),
+                            )
+                        })
+                        .collect();
+                    match held[..] {
+                        [] => return Err(format!("the sight from {i} to {j} is held by no pass")),
+                        [k] => only[k] += 1,
+                        _ => {}
+                    }
+                }
+            }
+            sights_only = only;
+        }
+        // Lemma 1: the brute-force pair lies in some P_i × Q_i of some pass.
+        if !cover.contains(&true) {
+            let subs: Vec<_> = plan.passes.iter().map(|b| &b.sub).collect();
+            return Err(format!(
+                "Lemma 1: the optimal pair {:?}/{:?} is in no subproblem {subs:?}",
+                brute.feature_p, brute.feature_q
+            ));
+        }
+        // σ agrees with the brute force exactly.
+        let (pair, _) = solve::<K>(p, q, &plan).map_err(|e| format!("{e}"))?;
+        let (cp, cq) = (closed_chain(p), closed_chain(q));
+        let brute = separation_brute::<K>(&cp, &cq).map_err(|e| format!("{e}"))?;
+        let (vp, vq) = (p.vertices(), q.vertices());
+        let d = dist_of(vp, vq, &pair);
+        let bd = dist_of(vp, vq, &brute);
+        if K::cmp_dist2(d, bd) != Ordering::Equal {
+            return Err(format!(
+                "σ differs: {pair:?} against the brute force {brute:?}"
+            ));
+        }
+        Ok((m, sights_only))
+    }
+
+    /// The checks of one pass: (i)–(iv), the greedy's interval belief, cuts, monotone subchains,
+    /// (v) when `check_v`; returns the number of kept segments and whether the brute-force pair
+    /// lies in one of the pass's subproblems.
+    fn check_pass<K: Kernel>(
+        p: &SimplePolygon,
+        q: &SimplePolygon,
+        b: &Built,
+        check_v: bool,
+        brute: &ClosestPair,
+    ) -> Result<(usize, bool), String> {
         let r = &b.region;
         let (vp, vq) = (p.vertices(), q.vertices());
         let m = b.kept.len();
@@ -932,40 +1545,104 @@ mod tests {
                 }
             }
         }
-        // Lemma 1: the brute-force pair lies in some P_i × Q_i.
-        let (cp, cq) = (closed_chain(p), closed_chain(q));
-        let brute = separation_brute::<K>(&cp, &cq).map_err(|e| format!("{e}"))?;
         let (np, nq) = (vp.len(), vq.len());
+        let holds = |fp: Feature, fq: Feature| pass_holds(b, np, nq, fp, fq);
+        // Lemma 1 (amended, notes 4.8) holds for every visible pair, not only the optimal one: on
+        // small cases, every vertex–vertex sight of this pass's region (a free segment from `P` to
+        // `Q` that does not cross the region's cut, in the containing case) must lie in a
+        // subproblem.
+        if check_v {
+            let cut = (r.ring[1] == r.ring[r.qt]).then(|| (r.ring[0], r.ring[1]));
+            for i in 0..np {
+                for j in 0..nq {
+                    let crosses_cut =
+                        cut.is_some_and(|(a, c)| proper_cross::<K>(vp[i], vq[j], a, c));
+                    if !crosses_cut
+                        && sight::<K>(vp, vq, i, j)
+                        && !holds(Feature::Vertex(i), Feature::Vertex(j))
+                    {
+                        return Err(format!(
+                            "Lemma 1: the sight from P vertex {i} to Q vertex {j} is in no subproblem"
+                        ));
+                    }
+                }
+            }
+        }
+        Ok((m, holds(brute.feature_p, brute.feature_q)))
+    }
+
+    /// Whether a pair of features lies in some `P_i × Q_i` of pass `b` (positions along the
+    /// walls; `Q`'s through the ring's sources, skipping the gap).
+    fn pass_holds(b: &Built, np: usize, nq: usize, fp: Feature, fq: Feature) -> bool {
+        let r = &b.region;
         let pos_p = |v: usize| (v % np + np - r.pb) % np;
-        let ring_q = |j: usize| 1 + (r.src[1] + nq - j % nq) % nq;
-        let p_in = |lo: usize, hi: usize| match brute.feature_p {
-            Feature::Vertex(v) => (lo..=hi).contains(&pos_p(v)),
+        let p_in = |lo: usize, hi: usize| match fp {
+            Feature::Vertex(v) => {
+                (lo..=hi).contains(&pos_p(v)) || (pos_p(v) == 0 && (lo..=hi).contains(&r.top))
+            }
             Feature::Edge(e) => pos_p(e) >= lo && pos_p(e) < hi,
         };
-        let q_in = |lo: usize, hi: usize| match brute.feature_q {
-            Feature::Vertex(j) => (lo..=hi).contains(&ring_q(j)),
-            Feature::Edge(f) => ring_q(f + 1) >= lo && ring_q(f) <= hi && ring_q(f) > lo,
+        let q_in = |lo: usize, hi: usize| match fq {
+            Feature::Vertex(j) => (lo..=hi).any(|x| r.src[x] == j % nq),
+            Feature::Edge(f) => (lo..hi)
+                .any(|x| Some(x) != r.gap && r.src[x] == (f + 1) % nq && r.src[x + 1] == f % nq),
         };
-        if !b
-            .sub
+        b.sub
             .iter()
             .any(|&((pl, ph), (ql, qh))| p_in(pl, ph) && q_in(ql, qh))
-        {
-            return Err(format!(
-                "Lemma 1: the optimal pair {:?}/{:?} is in no subproblem {:?}",
-                brute.feature_p, brute.feature_q, b.sub
-            ));
+    }
+
+    /// Whether segments `[a, b]` and `[c, d]` cross at a point interior to both (exact).
+    fn proper_cross<K: Kernel>(a: DVec2, b: DVec2, c: DVec2, d: DVec2) -> bool {
+        let opp = |x: Orientation, y: Orientation| {
+            matches!(
+                (x, y),
+                (Orientation::Clockwise, Orientation::CounterClockwise)
+                    | (Orientation::CounterClockwise, Orientation::Clockwise)
+            )
+        };
+        opp(K::orient(a, b, c), K::orient(a, b, d)) && opp(K::orient(c, d, a), K::orient(c, d, b))
+    }
+
+    /// Whether the open segment from `P`'s vertex `i` to `Q`'s vertex `j` is free: it leaves each
+    /// end strictly outside that polygon's angle, crosses no edge, passes through no vertex (exact).
+    fn sight<K: Kernel>(vp: &[DVec2], vq: &[DVec2], i: usize, j: usize) -> bool {
+        let (v, w) = (vp[i], vq[j]);
+        let outside = |poly: &[DVec2], k: usize, from: DVec2, to: DVec2| {
+            let n = poly.len();
+            let (prev, next) = (poly[(k + n - 1) % n], poly[(k + 1) % n]);
+            let o1 = K::orient(from, next, to);
+            let o2 = K::orient(from, to, prev);
+            match K::orient(prev, from, next) {
+                Orientation::CounterClockwise => {
+                    o1 == Orientation::Clockwise || o2 == Orientation::Clockwise
+                }
+                Orientation::Clockwise => {
+                    o1 == Orientation::Clockwise && o2 == Orientation::Clockwise
+                }
+                Orientation::Collinear => o1 == Orientation::Clockwise,
+            }
+        };
+        if !outside(vp, i, v, w) || !outside(vq, j, w, v) {
+            return false;
         }
-        // σ agrees with the brute force exactly.
-        let (pair, _) = solve::<K>(p, q, &b).map_err(|e| format!("{e}"))?;
-        let d = dist_of(vp, vq, &pair);
-        let bd = dist_of(vp, vq, &brute);
-        if K::cmp_dist2(d, bd) != Ordering::Equal {
-            return Err(format!(
-                "σ differs: {pair:?} against the brute force {brute:?}"
-            ));
+        for poly in [vp, vq] {
+            let n = poly.len();
+            for k in 0..n {
+                let (c, d) = (poly[k], poly[(k + 1) % n]);
+                if proper_cross::<K>(v, w, c, d) {
+                    return false;
+                }
+                if c != v
+                    && c != w
+                    && K::orient(v, w, c) == Orientation::Collinear
+                    && K::dot_sign(c, v, c, w) == Sign::Negative
+                {
+                    return false;
+                }
+            }
         }
-        Ok(m)
+        true
     }
 
     fn poly(v: &[DVec2]) -> SimplePolygon {
@@ -994,7 +1671,7 @@ mod tests {
         if crate::polygon::intersection::<Robust>(&p, &q).is_some() {
             return None;
         }
-        match region::<Robust>(&p, &q) {
+        match facing::<Robust>(&p, &q) {
             Ok(Ok(_)) => Some((p, q)),
             _ => None,
         }
@@ -1100,20 +1777,24 @@ mod tests {
         check_pair::<Exact>(&q, &p).unwrap();
     }
 
-    /// Geo errata D5 ("pinched"): `P` touches the hull of the union at one vertex only. Reported as
-    /// unsupported (not built), never a wrong answer.
+    /// Geo errata D5 ("pinched"): `P` touches the hull of the union at one vertex only, so `R` is
+    /// weakly simple (that vertex twice on its ring): triangulated in two halves through a cut,
+    /// checked in both orders (the second swaps the polygons).
     #[test]
-    fn geo_errata_d5_pinched_is_reported() {
+    fn geo_errata_d5_pinched() {
         let p = ring(&[[3.0, 2.0], [0.0, -4.0], [4.0, 2.0]]);
         let q = ring(&[[0.0, 8.0], [2.0, 3.0], [8.0, 4.0]]);
         assert!(matches!(
-            region::<Robust>(&p, &q),
+            facing::<Robust>(&q, &p),
             Ok(Err(Unsupported::Pinched))
         ));
-        assert!(matches!(
-            region::<Robust>(&q, &p),
-            Ok(Err(Unsupported::Pinched))
-        ));
+        for (a, b) in [(&p, &q), (&q, &p)] {
+            let plan = build::<Robust>(a, b).unwrap().unwrap();
+            assert_eq!(plan.passes.len(), 1);
+            assert!(plan.passes[0].region.cut.is_some());
+            check_pair_v::<Robust>(a, b, true).unwrap();
+            check_pair_v::<Exact>(a, b, true).unwrap();
+        }
     }
 
     /// The construction on pairs whose hulls are disjoint (the fast path switched off): the notes
@@ -1137,7 +1818,7 @@ mod tests {
             let (Ok(p), Ok(q)) = (SimplePolygon::try_new(&a), SimplePolygon::try_new(&b)) else {
                 continue;
             };
-            match region::<Robust>(&p, &q) {
+            match facing::<Robust>(&p, &q) {
                 Ok(Ok(_)) => {}
                 Ok(Err(Unsupported::Pinched)) => continue,
                 other => panic!("seed {seed}: {other:?}"),
@@ -1219,7 +1900,7 @@ mod tests {
             if crate::polygon::intersection::<Robust>(&p, &q).is_some() {
                 continue;
             }
-            if let Ok(Ok(r)) = region::<Robust>(&p, &q) {
+            if let Ok(Ok(r)) = facing::<Robust>(&p, &q) {
                 // Skip hull-disjoint placements: they are tested apart.
                 let disjoint_hulls = matches!(
                     polydist_convex::distance_with::<Robust>(&p.convex_hull(), &q.convex_hull()),
@@ -1291,6 +1972,184 @@ mod tests {
                 "{p:?} {q:?}"
             );
             assert_eq!(a.squared_distance.to_bits(), b.squared_distance.to_bits());
+        }
+    }
+
+    /// A "C": an outer arc of radius 2–2.5 and a spiky inner arc of radius 0.9–1.6 (clockwise),
+    /// open over `gap` radians around `phi`: its inside is one pocket, closed by a lid across the
+    /// mouth.
+    pub(super) fn c_shape(rng: &mut SplitMix64, n_out: usize, n_in: usize, gap: f64) -> Vec<DVec2> {
+        let phi = core::f64::consts::TAU * rng.unit_f64();
+        let span = core::f64::consts::TAU - gap;
+        let at = |a: f64, r: f64| DVec2::new(a.cos(), a.sin()) * r;
+        let mut v: Vec<DVec2> = (0..n_out)
+            .map(|k| {
+                let a = phi + gap / 2.0 + span * k as f64 / (n_out - 1) as f64;
+                at(a, 2.0 + 0.5 * rng.unit_f64())
+            })
+            .collect();
+        v.extend((0..n_in).map(|k| {
+            let a = phi + gap / 2.0 + span * (n_in - 1 - k) as f64 / (n_in - 1) as f64;
+            at(a, 0.9 + 0.7 * rng.unit_f64())
+        }));
+        v
+    }
+
+    /// A random star placed inside a random C (or in its mouth), disjoint from it.
+    fn pocket_pair(seed: u64) -> Option<(SimplePolygon, SimplePolygon)> {
+        let mut rng = SplitMix64::new(seed ^ 0x90c4e7);
+        let (n_out, n_in) = (3 + rng.index(12), 3 + rng.index(30));
+        let gap = 0.2 + 1.2 * rng.unit_f64();
+        let q = SimplePolygon::try_new(&c_shape(&mut rng, n_out, n_in, gap)).ok()?;
+        let n = 3 + rng.index(30);
+        let spikes = rng.index(n + 1);
+        let star = polydist_oracle::star(&mut rng, n, spikes);
+        let scale = 0.15 + 0.7 * rng.unit_f64();
+        let ang = core::f64::consts::TAU * rng.unit_f64();
+        let d = DVec2::new(ang.cos(), ang.sin()) * 1.2 * rng.unit_f64();
+        let pv: Vec<DVec2> = star.iter().map(|&x| x * scale + d).collect();
+        let p = SimplePolygon::try_new(&pv).ok()?;
+        if crate::polygon::intersection::<Robust>(&p, &q).is_some() {
+            return None;
+        }
+        Some((p, q))
+    }
+
+    /// The containing case: a star in the pocket of a C, in both orders (the second swaps the
+    /// polygons), checked like every other case; the annulus (two passes) and the lid-touching
+    /// layouts both occur.
+    #[test]
+    fn pocket_pairs_satisfy_the_separator_properties() {
+        let (mut annulus, mut other) = (0, 0);
+        // Sights that only one of the two passes holds: each pass is needed.
+        let mut only = [0, 0];
+        for seed in 0..1500 {
+            let Some((p, q)) = pocket_pair(seed) else {
+                continue;
+            };
+            let Some(plan) = build::<Robust>(&p, &q).unwrap() else {
+                panic!("seed {seed}: no region");
+            };
+            if plan.passes.len() == 2 {
+                annulus += 1;
+            } else {
+                other += 1;
+            }
+            let v = p.len() + q.len() <= 40;
+            for (a, b) in [(&p, &q), (&q, &p)] {
+                let robust = check_pair_cover::<Robust>(a, b, v);
+                if let Ok((_, o)) = &robust
+                    && o.len() == 2
+                {
+                    only[0] += o[0];
+                    only[1] += o[1];
+                }
+                for (name, res) in [
+                    ("Robust", robust.map(|(m, _)| m)),
+                    ("Exact", check_pair_v::<Exact>(a, b, false)),
+                ] {
+                    if let Err(e) = res {
+                        panic!(
+                            "seed {seed} ({name}): {e}\nP = {:?}\nQ = {:?}",
+                            a.vertices(),
+                            b.vertices()
+                        );
+                    }
+                }
+            }
+            let _ = build::<Fast>(&p, &q).map(|b| b.map(|b| solve::<Fast>(&p, &q, &b)));
+        }
+        eprintln!("annulus {annulus} other {other} only {only:?}");
+        assert!(only[0] > 0 && only[1] > 0, "{only:?}");
+        assert!(
+            annulus >= 300,
+            "only {annulus} annulus cases ({other} others)"
+        );
+    }
+
+    /// `P` in the pocket of a U touching the pocket's lid (the top side `y = 10`): at one vertex
+    /// (pinched on the lid), along an edge, and at two vertices with a notch between them (the
+    /// non-containing layout with both bridges on the lid); and in the open pocket (the annulus).
+    /// In both orders, with every vertex–vertex sight checked.
+    #[test]
+    fn pocket_lid_touching_and_open() {
+        let u = ring(&[
+            [0.0, 0.0],
+            [10.0, 0.0],
+            [10.0, 10.0],
+            [8.0, 10.0],
+            [8.0, 2.0],
+            [2.0, 2.0],
+            [2.0, 10.0],
+            [0.0, 10.0],
+        ]);
+        let cases: [(&[[f64; 2]], usize, bool); 4] = [
+            (&[[4.0, 5.0], [6.0, 5.0], [5.0, 10.0]], 1, true),
+            (
+                &[[3.0, 6.0], [7.0, 6.0], [7.0, 10.0], [3.0, 10.0]],
+                1,
+                false,
+            ),
+            (
+                &[[3.0, 6.0], [7.0, 6.0], [7.0, 10.0], [5.0, 8.0], [3.0, 10.0]],
+                1,
+                false,
+            ),
+            (
+                &[[3.0, 4.0], [7.0, 3.0], [6.0, 9.0], [5.0, 6.0], [4.0, 9.5]],
+                2,
+                false,
+            ),
+        ];
+        for (k, &(pv, passes, cut)) in cases.iter().enumerate() {
+            let p = ring(pv);
+            let plan = build::<Robust>(&p, &u)
+                .unwrap_or_else(|e| panic!("case {k}: {e}"))
+                .unwrap();
+            assert_eq!(plan.passes.len(), passes, "case {k}");
+            assert_eq!(
+                plan.passes.iter().all(|b| b.region.cut.is_some()),
+                cut || passes == 2,
+                "case {k}"
+            );
+            for (a, b) in [(&p, &u), (&u, &p)] {
+                check_pair_v::<Robust>(a, b, true).unwrap_or_else(|e| panic!("case {k}: {e}"));
+                check_pair_v::<Exact>(a, b, true).unwrap_or_else(|e| panic!("case {k}: {e}"));
+            }
+        }
+        // Inside the U's wall, not in its pocket: no region (the polygons meet).
+        let inner = ring(&[[0.5, 0.5], [1.5, 0.5], [1.0, 1.5]]);
+        assert!(build::<Robust>(&inner, &u).unwrap().is_none());
+        assert!(build::<Robust>(&u, &inner).unwrap().is_none());
+    }
+
+    /// A diamond in a notch of a comb whose tooth tips all lie on one hull edge: the notch is a
+    /// pocket of its own (its lid runs between two tips, not along the whole hull edge), in the
+    /// open and touching its lid at one vertex. Found by the proptests of `tests/polygons.rs`.
+    #[test]
+    fn pocket_in_a_comb_notch() {
+        let comb = ring(&[
+            [0.0, -1.0],
+            [5.0, -1.0],
+            [5.0, 3.0],
+            [4.0, 3.0],
+            [4.0, 0.0],
+            [3.0, 0.0],
+            [3.0, 3.0],
+            [2.0, 3.0],
+            [2.0, 0.0],
+            [1.0, 0.0],
+            [1.0, 3.0],
+            [0.0, 3.0],
+        ]);
+        for (tip, passes) in [(2.875, 2), (3.0, 1)] {
+            let d = ring(&[[3.5, 0.5], [3.875, 1.5], [3.5, tip], [3.125, 1.5]]);
+            let plan = build::<Robust>(&d, &comb).unwrap().unwrap();
+            assert_eq!(plan.passes.len(), passes);
+            for (a, b) in [(&d, &comb), (&comb, &d)] {
+                check_pair_v::<Robust>(a, b, true).unwrap_or_else(|e| panic!("{tip}: {e}"));
+                check_pair_v::<Exact>(a, b, true).unwrap_or_else(|e| panic!("{tip}: {e}"));
+            }
         }
     }
 }

@@ -231,7 +231,7 @@ impl Triangulation {
     }
 
     /// Builds the adjacency of `n − 2` triangles of a ring of `n` vertices.
-    fn from_triangles(n: usize, triangles: Vec<[u32; 3]>) -> Result<Self, TriangulationError> {
+    pub(crate) fn glue(n: usize, triangles: Vec<[u32; 3]>) -> Result<Self, TriangulationError> {
         let bad = |index: u32, what| TriangulationError::Inconsistent {
             index: index as usize,
             what,
@@ -361,7 +361,7 @@ pub fn triangulate<K: Kernel>(ring: &[DVec2]) -> Result<Triangulation, Triangula
     for piece in &pieces {
         triangulate_monotone::<K>(ring, piece, &mut triangles)?;
     }
-    Triangulation::from_triangles(n, triangles)
+    Triangulation::glue(n, triangles)
 }
 
 // ---------------------------------------------------------------------------------------------------
@@ -787,5 +787,5 @@ pub fn triangulate_brute<K: Kernel>(ring: &[DVec2]) -> Result<Triangulation, Tri
         });
     }
     triangles.push([rest[0] as u32, rest[1] as u32, rest[2] as u32]);
-    Triangulation::from_triangles(n, triangles)
+    Triangulation::glue(n, triangles)
 }

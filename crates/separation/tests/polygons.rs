@@ -9,7 +9,7 @@ use polydist_oracle::{
 use polydist_polygon::predicates::{Exact, Fast, Kernel, Robust};
 use polydist_polygon::{Feature, Location, SimplePolygon};
 use polydist_separation::{
-    Intersection, PolygonSeparation, Route, SeparationError, intersection, point_to_polygon,
+    Intersection, PolygonSeparation, Route, intersection, point_to_polygon,
     polygon_separation_brute, segment_to_polygon, separation, separation_of_disjoint,
 };
 use proptest::prelude::*;
@@ -74,7 +74,7 @@ fn place_beside(
 
 /// Checks one pair: the intersection check against the oracle and the brute force, and when the
 /// polygons are disjoint, `separation` against the oracle (exact optimal features, distance within
-/// 3.5 ulps) or `HullsIntersect` exactly when the hulls meet.
+/// 3.5 ulps), whatever the hulls do (disjoint, interlocked, nested, pinched).
 fn check_pair<K: Kernel>(p: &[DVec2], q: &[DVec2]) -> Result<(), TestCaseError> {
     let (Ok(sp), Ok(sq)) = (SimplePolygon::try_new(p), SimplePolygon::try_new(q)) else {
         return Ok(());
@@ -111,11 +111,6 @@ fn check_pair<K: Kernel>(p: &[DVec2], q: &[DVec2]) -> Result<(), TestCaseError> 
             prop_assert!(
                 exact.is_optimal_pair(oracle_feature(b.feature_p), oracle_feature(b.feature_q))
             );
-        }
-        Err(SeparationError::HullsIntersect) => {
-            prop_assert!(!meets);
-            let (hp, hq) = (sp.convex_hull(), sq.convex_hull());
-            prop_assert!(contact_status_convex(hp.vertices(), hq.vertices()) != Contact::Disjoint);
         }
         Err(e) => return Err(TestCaseError::fail(format!("unexpected error {e}"))),
     }
@@ -166,6 +161,29 @@ proptest! {
     fn interlocked_pairs_exact(seed in any::<u64>()) {
         let (p, q) = interlocked_case(seed);
         check_pair::<Exact>(&p, &q)?;
+    }
+
+    #[test]
+    fn pocket_pairs_robust(seed in any::<u64>()) {
+        if let Some((p, q)) = pocket_case(seed) {
+            check_pair::<Robust>(&p, &q)?;
+        }
+    }
+
+    #[test]
+    fn pocket_pairs_exact(seed in any::<u64>()) {
+        if let Some((p, q)) = pocket_case(seed) {
+            check_pair::<Exact>(&p, &q)?;
+        }
+    }
+
+    #[test]
+    fn pocket_pairs_far_from_origin(seed in any::<u64>()) {
+        if let Some((p, q)) = pocket_case(seed) {
+            let o = DVec2::new(1e12, 1e12);
+            let (p, q): (Vec<DVec2>, Vec<DVec2>) = (p.iter().map(|&v| v + o).collect(), q.iter().map(|&v| v + o).collect());
+            check_pair::<Robust>(&p, &q)?;
+        }
     }
 
     #[test]
@@ -447,6 +465,49 @@ fn interlocked_case(seed: u64) -> (Vec<DVec2>, Vec<DVec2>) {
     (p, q)
 }
 
+/// A small shape dropped into a pocket of a comb or a spiral (its hull inside the other's), at a
+/// random dyadic scale and place, retried until the two are disjoint; `None` when no try lands.
+fn pocket_case(seed: u64) -> Option<(Vec<DVec2>, Vec<DVec2>)> {
+    let mut rng = SplitMix64::new(seed ^ 0x70c4e7);
+    let outer = if rng.coin() {
+        comb(
+            1 + rng.index(12),
+            2 + rng.below(5) as u32,
+            1 + rng.below(3) as u32,
+        )
+    } else {
+        spiral(3 + rng.below(20) as u32, 1 + rng.below(3) as u32)
+    };
+    let n = 3 + rng.index(30);
+    let spikes = rng.index(n + 1);
+    let inner0 = star(&mut rng, n, spikes);
+    let so = SimplePolygon::try_new(&outer).ok()?;
+    let hull = so.convex_hull();
+    let (lo, hi) = bbox(&outer);
+    let (ilo, ihi) = bbox(&inner0);
+    let ic = (ilo + ihi) * 0.5;
+    for _ in 0..64 {
+        let scale = (hi - lo).min_element() / (ihi - ilo).max_element()
+            * 0.5f64.powi(2 + rng.below(5) as i32);
+        let at = lo + (hi - lo) * DVec2::new(rng.unit_f64(), rng.unit_f64());
+        let inner: Vec<DVec2> = inner0.iter().map(|&v| (v - ic) * scale + at).collect();
+        let Ok(si) = SimplePolygon::try_new(&inner) else {
+            continue;
+        };
+        let nested = inner
+            .iter()
+            .all(|&v| hull.locate_with::<Robust>(v) != Location::Outside);
+        if nested && intersection::<Robust>(&si, &so).is_none() {
+            return Some(if rng.coin() {
+                (inner, outer)
+            } else {
+                (outer, inner)
+            });
+        }
+    }
+    None
+}
+
 /// The separator route is taken on most disjoint interlocked pairs.
 #[test]
 fn separator_route_is_exercised() {
@@ -500,4 +561,26 @@ fn caller_features_survive_cleaning() {
     );
     assert_eq!(pair.distance, 1.0);
     check_pair::<Robust>(&p, &q).unwrap();
+}
+
+/// Pocket cases land, and take the separator route.
+#[test]
+fn pocket_cases_are_generated_and_take_the_separator_route() {
+    let mut landed = 0;
+    for seed in 0..200 {
+        let Some((p, q)) = pocket_case(seed) else {
+            continue;
+        };
+        let (sp, sq) = (
+            SimplePolygon::try_new(&p).unwrap(),
+            SimplePolygon::try_new(&q).unwrap(),
+        );
+        let route = match separation::<Robust>(&sp, &sq) {
+            Ok(PolygonSeparation::Separated { route, .. }) => route,
+            other => panic!("seed {seed}: {other:?}"),
+        };
+        assert_eq!(route, Route::Separators, "seed {seed}");
+        landed += 1;
+    }
+    assert!(landed >= 100, "only {landed} pocket cases");
 }
