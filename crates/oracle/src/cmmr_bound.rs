@@ -8,9 +8,11 @@
 //! Each term is an exact rational `N²/L` with its own denominator `L` (a squared edge length), so
 //! the exact sum of 10⁵ terms has a common denominator of millions of bits; [`crate::cmmr`] forms
 //! it, at `Θ(n²)` bit operations. A test of "within 6 ulps" only needs an interval around the sum
-//! much narrower than one ulp of it, which this module computes in `O(N log N)`-ish time
-//! (complexity below). It uses only this crate's exact big-integer primitives and its pruned
-//! search, never polydist's algorithms.
+//! much narrower than one ulp of it, which this module computes in `O(N log N)` exact operations
+//! on big integers. It uses only this crate's exact big-integer primitives, never polydist's
+//! algorithms: the nearest edge is found by its own binary searches (exact signs, proofs at
+//! [`fan_locate`] and [`sq_dist_outside`]) and each term is checked against the brute force in
+//! the tests.
 //!
 //! # The enclosure and its proof
 //! Work on the common grid of both polygons (every coordinate an integer times `2^e`, exact, as in
@@ -20,12 +22,11 @@
 //!    vertices (exact, counter-clockwise, strictly convex: [`crate::contact`]'s hull).
 //!    * If `H` has 1 or 2 vertices, `δ(v)²` is the exact distance to that point or segment.
 //!    * Otherwise `v ∈ H` is decided exactly by a binary search over the fan of triangles
-//!      `(h₀, hᵢ, hᵢ₊₁)` ([`in_closed_convex`], proof at the function). Inside or on: `δ(v)² = 0`.
-//!    * Outside: the nearest point of the closed convex set `H` to an outside point lies on its
-//!      boundary (the segment from `v` to any interior point meets the boundary first), so
-//!      `δ(v)²` is the exact squared distance from `v` to `H`'s boundary, found by the pruned walk
-//!      of [`crate::pruned`] (whose module doc proves that the pruning never discards the
-//!      optimum): an exact fraction `n/d` in grid units, `n ≥ 0`, `d > 0` an integer.
+//!      `(h₀, hᵢ, hᵢ₊₁)` ([`fan_locate`], proof at the function). Inside or on: `δ(v)² = 0`.
+//!    * Outside: `δ(v)²` is the exact squared distance from `v` to `H`'s nearest edge, found by
+//!      binary searches over the edges visible from `v`, on which the distance is unimodal
+//!      ([`sq_dist_outside`], proof there): an exact fraction `n/d` in grid units (`n ≥ 0`, `d > 0`
+//!      integers, `d` a squared edge length or 1).
 //! 2. **Rounding each term, exactly.** For an integer `k` chosen below, each term is rounded to the
 //!    grid `2^−k` downward and upward by exact big-integer division: `aᵢ = ⌊nᵢ·2^k / dᵢ⌋`,
 //!    `bᵢ = ⌈nᵢ·2^k / dᵢ⌉` (for `k < 0`, dividing by `dᵢ·2^−k`). Then
@@ -46,12 +47,16 @@
 //! decide makes the bound large and the check fail, never pass.
 //!
 //! # Complexity
-//! Hulls `O(N log N)` exact comparisons, box trees `O(N)`, one `O(log m)` point location per
-//! vertex, and one pruned walk per vertex outside: `O(log m)` node pairs when few boxes lie within
-//! the optimum of the walk (every pair of the suite: a vertex outside a convex polygon sees its
-//! boundary curve away from the nearest point), `O(m)` in the worst case (a vertex above a long
-//! nearly-straight chain of vertices all about as near); no better bound is claimed. Measured
-//! (debug test build, shared 2-core machine): see `docs/algorithms/hausdorff-cmmr.md`.
+//! `O(N log N)` exact operations for `N = |p| + |q|`: the hulls (a sort), then per vertex one fan
+//! location and four binary searches (`O(log m)` orientations and dot products) and three exact
+//! point–edge distances; then two big-integer divisions per term. Measured on the 9 large pairs
+//! (10⁴–2·10⁵ vertices), debug test build on a shared 2-core machine: 0.02–0.2 s for the pairs of
+//! about 10⁴ vertices, 2.3–2.6 s for the pairs of 2·10⁵, 6 s in all. (A first version took the
+//! distance of each outside vertex from the pruned box search of [`crate::pruned`]: the same terms,
+//! but `Θ(√n)` leaves per vertex on the dense circles, whose boxes near the nearest point all lie
+//! within the optimum; 33 s per pair of 2·10⁵ vertices. The enclosures first stored in
+//! `fixtures/hard/large_convex.txt` were computed by it, and the searches here give the same
+//! intervals on all 9 pairs, which the suite recomputes: two methods, one answer.)
 
 use core::cmp::Ordering;
 
@@ -59,12 +64,11 @@ use glam::DVec2;
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_rational::BigRational;
-use num_traits::Zero;
+use num_traits::{Signed, Zero};
 
 use crate::contact::convex_hull;
-use crate::exact::{Frac, Grid, IPt, orient};
+use crate::exact::{Frac, Grid, IPt, cross, dot, orient, sq_ps};
 use crate::hausdorff::sq_to_hull;
-use crate::pruned::{BoxTree, item_boxes, point_to_boundary};
 use crate::rounding::{ulps_error_interval, width_ulps};
 
 /// The relative width of the enclosure is below `2^−WIDTH_BITS` (module doc, step 4).
@@ -111,8 +115,7 @@ impl CmmrEnclosure {
 /// enclosure is in the module doc (`cmmr_bound.rs`).
 ///
 /// # Complexity
-/// `O(N log N)` plus one pruned walk per vertex (`O(log m)` on the suite's families, `O(m)` worst
-/// case; module doc), `N = |p| + |q|`; the terms are exact big-integer fractions.
+/// `O(N log N)` exact big-integer operations, `N = |p| + |q|` (module doc).
 ///
 /// # Panics
 /// Panics if `p` or `q` is empty or a coordinate is not finite.
@@ -148,36 +151,36 @@ fn sq_dists_to_filled(vs: &[IPt], other: &[IPt]) -> Vec<Frac> {
     if hull.len() < 3 {
         return vs.iter().map(|v| sq_to_hull(v, &hull)).collect();
     }
-    let tree = BoxTree::new(item_boxes(&hull));
     vs.iter()
-        .map(|v| {
-            if in_closed_convex(v, &hull) {
-                Frac::zero()
-            } else {
-                // Outside a closed convex set: the nearest point is on its boundary.
-                point_to_boundary(v, &hull, &tree)
-            }
+        .map(|v| match fan_locate(v, &hull) {
+            Ok(()) => Frac::zero(),
+            Err(j) => sq_dist_outside(v, &hull, j),
         })
         .collect()
 }
 
-/// Whether `v` lies in the closed strictly convex counter-clockwise polygon `h` (`n ≥ 3`), in
-/// `O(log n)` exact orientations.
+/// Whether `v` lies in the closed strictly convex counter-clockwise polygon `h` (`n ≥ 3`): `Ok`,
+/// or `Err(j)` with an edge `j` whose line has `v` strictly on its outer side
+/// (`orient(hⱼ, hⱼ₊₁, v) < 0`, "edge `j` is visible from `v`"), in `O(log n)` exact orientations.
 ///
 /// Proof. The triangles `Tᵢ = (h₀, hᵢ, hᵢ₊₁)`, `1 ≤ i ≤ n − 2`, cover `h`, and `Tᵢ` is `h`
 /// intersected with the closed cone at `h₀` between `uᵢ = hᵢ − h₀` and `uᵢ₊₁`. The directions
 /// `u₁, …, uₙ₋₁` turn strictly counter-clockwise within an angle below π (the interior angle at
-/// `h₀`). If `v` is outside the cone between `u₁` and `uₙ₋₁` (first test) it is outside `h`.
-/// Otherwise `w = v − h₀` lies in that cone, so `w` and every `uᵢ` are less than π apart and
-/// `orient(h₀, hᵢ, v) ≥ 0` iff `angle(uᵢ) ≤ angle(w)`: true at `i = 1`, and monotone (true, then
-/// false) in `i`, so the binary search finds the last `i*` where it holds (`v = h₀` makes it hold
-/// everywhere). With `i = min(i*, n − 2)`, `angle(uᵢ) ≤ angle(w) ≤ angle(uᵢ₊₁)`: `v` is in the
-/// cone of `Tᵢ`, so `v ∈ h` iff `v ∈ Tᵢ` iff `v` is on the inner side of `hᵢhᵢ₊₁` (or on it).
-fn in_closed_convex(v: &IPt, h: &[IPt]) -> bool {
+/// `h₀`). If `v` is outside the cone between `u₁` and `uₙ₋₁` (first two tests), edge 0 or edge
+/// `n − 1` is visible. Otherwise `w = v − h₀` lies in that cone, so `w` and every `uᵢ` are less
+/// than π apart and `orient(h₀, hᵢ, v) ≥ 0` iff `angle(uᵢ) ≤ angle(w)`: true at `i = 1`, and
+/// monotone (true, then false) in `i`, so the binary search finds the last `i*` where it holds
+/// (`v = h₀` makes it hold everywhere). With `i = min(i*, n − 2)`,
+/// `angle(uᵢ) ≤ angle(w) ≤ angle(uᵢ₊₁)`: `v` is in the cone of `Tᵢ`, so `v ∈ h` iff `v ∈ Tᵢ` iff
+/// `orient(hᵢ, hᵢ₊₁, v) ≥ 0`; if not, edge `i` is visible.
+fn fan_locate(v: &IPt, h: &[IPt]) -> Result<(), usize> {
     let n = h.len();
-    if orient(&h[0], &h[1], v) == Ordering::Less || orient(&h[0], &h[n - 1], v) == Ordering::Greater
-    {
-        return false;
+    if orient(&h[0], &h[1], v) == Ordering::Less {
+        return Err(0);
+    }
+    if orient(&h[0], &h[n - 1], v) == Ordering::Greater {
+        // orient(hₙ₋₁, h₀, v) = −orient(h₀, hₙ₋₁, v) < 0.
+        return Err(n - 1);
     }
     // Invariant: the test holds at `lo`, fails beyond `hi`.
     let (mut lo, mut hi) = (1, n - 1);
@@ -190,7 +193,130 @@ fn in_closed_convex(v: &IPt, h: &[IPt]) -> bool {
         }
     }
     let i = lo.min(n - 2);
-    orient(&h[i], &h[i + 1], v) != Ordering::Less
+    if orient(&h[i], &h[i + 1], v) == Ordering::Less {
+        Err(i)
+    } else {
+        Ok(())
+    }
+}
+
+/// Whether `v` lies in the closed strictly convex counter-clockwise polygon `h` ([`fan_locate`]).
+#[cfg(test)]
+fn in_closed_convex(v: &IPt, h: &[IPt]) -> bool {
+    fan_locate(v, h).is_ok()
+}
+
+/// The exact squared distance (grid units) from `v`, outside the closed strictly convex
+/// counter-clockwise polygon `h` (`n ≥ 3`), to `h`, given an edge `j` visible from `v`; `O(log n)`
+/// exact evaluations. Indices are taken mod `n`; `dᵢ = hᵢ₊₁ − hᵢ`, `nᵢ = (dᵢ.y, −dᵢ.x)` the outward
+/// normal, so edge `i` is visible iff `nᵢ·(v − hᵢ) > 0` iff `orient(hᵢ, hᵢ₊₁, v) < 0`.
+///
+/// Proof, in four facts.
+/// (a) *The visible edges form one nonempty cyclic run, not all edges.* `nᵢ·v > nᵢ·hᵢ` says that
+///     the support line of `h` with normal `nᵢ` separates `v`; the normals of such lines form an
+///     open arc of directions shorter than π (those `θ` with `θ·(x − v) < 0` for all `x ∈ h`, a
+///     convex set not containing `v`), and the edge normals are in counter-clockwise order, so the
+///     visible ones are consecutive; `j` is one; not all, since the normals of a closed polygon do
+///     not lie in an open half-plane.
+/// (b) *A non-visible edge `k`.* With `u = v − h₀`: `nᵢ·(v − hᵢ) = nᵢ·u + nᵢ·(h₀ − hᵢ) ≤ nᵢ·u`
+///     (`h₀ ∈ h` is on the inner side of every edge line), so `nᵢ·u = cross(u, dᵢ) ≤ 0` makes edge
+///     `i` non-visible. If it holds for `i = 0`, `k = 0`. Otherwise `−u` has turned from `d₀` by
+///     `τ_w ∈ (0, π)`; the turn `τᵢ` of `dᵢ` from `d₀` increases strictly with `i` from 0 to
+///     `τₙ₋₁ ∈ (π, 2π)`, each step below π (strict convexity). "`τᵢ < τ_w`" is exactly
+///     `cross(d₀, dᵢ) ≥ 0 ∧ cross(dᵢ, −u) > 0` (for `τᵢ ≤ π`, the turn from `dᵢ` to `−u` is then
+///     in `(−π, π)`, positive iff the cross product is; `τᵢ = π` makes the second factor
+///     negative), true at 0 and false at `n − 1`; the first `k` where it fails has `τ_w ≤ τₖ < τ_w + π`, so `dₖ`
+///     lies in the closed half-circle clockwise of `u`: `cross(u, dₖ) ≤ 0`, non-visible.
+/// (c) *The run's ends.* From `k` (not visible) counter-clockwise to `j` (visible) the visibility
+///     changes once (false, then true), and from `j` to `k + n` once (true, then false), by (a):
+///     two binary searches give the run `j₀ ..= j₁`.
+/// (d) *Unimodality on the run, and the minimum.* The nearest point of `h` lies on a visible
+///     edge (at an edge's interior point, `v − π(v)` is that edge's outward normal; at a vertex, it
+///     lies in the vertex's normal cone, and a nonzero vector `a·nₖ₋₁ + b·nₖ`, `a, b ≥ 0`, has a
+///     positive dot product with `nₖ₋₁` or `nₖ` since they are less than π apart). Along edge `i`
+///     the squared distance `F` has derivative sign `s = sign((x − v)·dᵢ)`, strictly increasing
+///     along the edge. At a vertex `hᵢ₊₁` between visible edges `i`, `i + 1`:
+///     `(hᵢ₊₁ − v)·dᵢ ≥ 0 ⇒ (hᵢ₊₁ − v)·dᵢ₊₁ > 0` (write `hᵢ₊₁ − v = α dᵢ + β dᵢ₊₁`; visibility of
+///     both gives `β > 0 > α`, and the two dot-product signs would give
+///     `|dᵢ|²|dᵢ₊₁|² ≤ (dᵢ·dᵢ₊₁)²`, contradicting Cauchy–Schwarz for non-parallel edges). So on
+///     the run `F` decreases, then increases; "`F` rises at the end of edge `i`",
+///     `(hᵢ₊₁ − v)·dᵢ > 0`, is false then true along the run, and at the first edge `i*` where it
+///     holds (or `j₁` if none) `F`'s minimum over the run, hence `δ(v)²`, is `F`'s minimum over
+///     edge `i*`: [`sq_ps`] of that edge, exact. The result is the minimum of [`sq_ps`] over edges
+///     `i* − 1 ..= i* + 1`: every edge's value is at least `δ(v)²`, and `i*`'s equals it (the
+///     neighbours are a cheap guard against an off-by-one in the search, not needed by the proof).
+///
+/// # Panics
+/// Panics if a certificate of the proof fails (`j` not visible or `k` visible): a bug, not a
+/// property of the input.
+fn sq_dist_outside(v: &IPt, h: &[IPt], j: usize) -> Frac {
+    let n = h.len();
+    let at = |i: usize| &h[i % n];
+    let dir = |i: usize| at(i + 1).sub(at(i));
+    let visible = |i: usize| orient(at(i), at(i + 1), v) == Ordering::Less;
+    assert!(visible(j), "sq_dist_outside: edge {j} is not visible");
+    // (b) A non-visible edge.
+    let u = v.sub(&h[0]);
+    let d0 = dir(0);
+    let k = if cross(&u, &d0).is_positive() {
+        let w = (-&u.0, -&u.1);
+        let before_w = |i: usize| {
+            let di = dir(i);
+            !cross(&d0, &di).is_negative() && cross(&di, &w).is_positive()
+        };
+        // Invariant: before_w(lo), !before_w(hi).
+        let (mut lo, mut hi) = (0, n - 1);
+        while hi - lo > 1 {
+            let mid = lo + (hi - lo) / 2;
+            if before_w(mid) {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        hi
+    } else {
+        0
+    };
+    assert!(!visible(k), "sq_dist_outside: edge {k} is visible");
+    // (c) The run j₀ ..= j₁ (indices in k + 1 ..= k + n − 1, taken mod n).
+    let jj = if j > k { j } else { j + n };
+    let (mut lo, mut hi) = (k, jj); // !visible(lo), visible(hi)
+    while hi - lo > 1 {
+        let mid = lo + (hi - lo) / 2;
+        if visible(mid) {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    let j0 = hi;
+    let (mut lo, mut hi) = (jj, k + n); // visible(lo), !visible(hi)
+    while hi - lo > 1 {
+        let mid = lo + (hi - lo) / 2;
+        if visible(mid) {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    let j1 = lo;
+    // (d) The first edge of the run where F rises at its end (j₁ if none).
+    let rises = |i: usize| dot(&at(i + 1).sub(v), &dir(i)).is_positive();
+    let (mut lo, mut hi) = (j0, j1); // every edge before lo falls; rises(hi) or hi = j₁
+    while lo < hi {
+        let mid = lo + (hi - lo) / 2;
+        if rises(mid) {
+            hi = mid;
+        } else {
+            lo = mid + 1;
+        }
+    }
+    [lo + n - 1, lo, lo + 1]
+        .into_iter()
+        .map(|i| sq_ps(v, at(i), at(i + 1)))
+        .min()
+        .unwrap_or_else(Frac::zero)
 }
 
 /// Steps 2–4 of the module doc: every term rounded down and up to the grid `2^−k` by exact
@@ -282,12 +408,14 @@ mod tests {
         }
     }
 
-    /// The fan location agrees with the exact crossing-rule location on every lattice point of a
-    /// box around lattice polygons (vertices, edges, the cone's sides and their extensions).
+    /// The fan location agrees with the exact crossing-rule location, and the `O(log n)` distance
+    /// of an outside point with the brute force over every edge, on a lattice of points in and
+    /// around random convex polygons (3 to 200 vertices), co-circular lattice sets (exact ties) and
+    /// on their vertices, on their edges' lines beyond the vertices and at twice their vertices.
     #[test]
-    fn fan_location_is_exact() {
+    fn fan_location_and_nearest_edge_are_exact() {
         let mut rng = SplitMix64::new(7);
-        for n in [3, 4, 6, 12] {
+        for n in [3, 4, 5, 6, 12, 40, 200] {
             let poly = random_convex(&mut rng, n, DVec2::new(0.5, -0.25), 3.0);
             let grid = Grid::for_points(poly.iter());
             let hull = convex_hull(&grid.pts(&poly));
@@ -302,12 +430,13 @@ mod tests {
                     )
                 };
                 let ((x0, x1), (y0, y1)) = (span(&xs), span(&ys));
-                // Sample the box on a 41 × 41 lattice plus every vertex and edge midpoint ×2.
+                // A 41 × 41 lattice over the box grown by about its size, plus points on and
+                // beside the boundary.
                 let mut probes: Vec<IPt> = Vec::new();
                 for i in 0..=40 {
                     for j in 0..=40 {
-                        let x = &x0 - 1 + (&x1 - &x0 + 2) * i / 40;
-                        let y = &y0 - 1 + (&y1 - &y0 + 2) * j / 40;
+                        let x = &x0 - (&x1 - &x0) - 1 + (&x1 - &x0 + 1) * 3 * i / 40;
+                        let y = &y0 - (&y1 - &y0) - 1 + (&y1 - &y0 + 1) * 3 * j / 40;
                         probes.push(IPt { x, y });
                     }
                 }
@@ -318,7 +447,7 @@ mod tests {
                         x: &a.x + &b.x,
                         y: &a.y + &b.y,
                     });
-                    // 2·(midpoint) on a doubled polygon below; here: a − (b − a), on the line.
+                    // a − (b − a): on the edge's line, beyond a.
                     probes.push(IPt {
                         x: &a.x * 2 - &b.x,
                         y: &a.y * 2 - &b.y,
@@ -336,6 +465,9 @@ mod tests {
                         let want = crate::exact::locate(&crate::exact::HPt::from_ipt(v), poly)
                             != crate::Location::Outside;
                         assert_eq!(in_closed_convex(v, poly), want);
+                        // The O(log n) nearest-feature search against the brute force.
+                        let ours = sq_dists_to_filled(core::slice::from_ref(v), poly);
+                        assert_eq!(ours[0], sq_to_hull(v, poly));
                     }
                 }
             }

@@ -50,7 +50,7 @@ const LEAF: usize = 8;
 
 /// An axis-aligned box on the grid: `[x0, x1] × [y0, y1]`.
 #[derive(Clone, Debug)]
-pub(crate) struct GridBox {
+struct GridBox {
     x0: BigInt,
     x1: BigInt,
     y0: BigInt,
@@ -110,14 +110,14 @@ struct Node {
 }
 
 /// A box tree over the items of one polygon (see the module doc); node 0 is the root.
-pub(crate) struct BoxTree {
+struct BoxTree {
     nodes: Vec<Node>,
     items: Vec<GridBox>,
 }
 
 impl BoxTree {
     /// The tree of `items` (at least one).
-    pub(crate) fn new(items: Vec<GridBox>) -> BoxTree {
+    fn new(items: Vec<GridBox>) -> BoxTree {
         let mut t = BoxTree {
             nodes: Vec::new(),
             items,
@@ -158,7 +158,7 @@ impl BoxTree {
 }
 
 /// The item boxes of a polygon (`n ≥ 3`): item `i` = vertex `i` and edge `i`.
-pub(crate) fn item_boxes(v: &[IPt]) -> Vec<GridBox> {
+fn item_boxes(v: &[IPt]) -> Vec<GridBox> {
     (0..v.len())
         .map(|i| GridBox::of(&v[i], &v[(i + 1) % v.len()]))
         .collect()
@@ -306,7 +306,7 @@ pub fn min_vertex_distance_pruned(p: &[DVec2], q: &[DVec2]) -> (BigRational, Vec
 
 /// The squared distance from `v` to the boundary of the polygon of `tree` (points `poly`), by the
 /// pruned walk of one point against the tree (the module doc's proof with `v`'s point box).
-pub(crate) fn point_to_boundary(v: &IPt, poly: &[IPt], tree: &BoxTree) -> Frac {
+fn point_to_boundary(v: &IPt, poly: &[IPt], tree: &BoxTree) -> Frac {
     let pt = BoxTree::new(vec![GridBox::of(v, v)]);
     let (best, _) = search(&pt, tree, |_, j| {
         vec![((), sq_ps(v, &poly[j], &poly[(j + 1) % poly.len()]))]
