@@ -4,6 +4,9 @@
 //!
 //! Under Robust and Exact: exact optimal features and the documented bounds on every case, no
 //! exceptions (distance within 3.5 ulps, squared distance within 5, Hausdorff within 3.5, CMMR within 6).
+//! The large pairs (`fixtures/hard/large_convex.txt`) store a certified enclosure of the CMMR instead
+//! of its exact value (`polydist_oracle::cmmr_enclosure`): the computed CMMR must be within 6 ulps of
+//! every point of it, and the suite recomputes every stored enclosure.
 //! Under Fast: the number of wrong answers is recorded and printed; only termination without a panic
 //! is asserted.
 
