@@ -5,6 +5,7 @@ use core::str::FromStr;
 
 use num_rational::BigRational;
 
+use crate::cmmr_bound::CmmrEnclosure;
 use crate::distance::Feature;
 
 /// The answers of one convex case (see `examples/gen_hard.rs` for their meaning).
@@ -31,6 +32,9 @@ pub struct HardAnswers {
     /// The exact CMMR value; `None` for the large cases (`fixtures/hard/large_convex.txt`), where
     /// an exact sum of 10⁵ rationals with distinct denominators is out of reach.
     pub cmmr: Option<BigRational>,
+    /// For the large cases, a certified enclosure of the CMMR value (`cmmr_enclosure LO HI`, from
+    /// [`crate::cmmr_enclosure`]); `None` where the exact value is stored.
+    pub cmmr_enclosure: Option<CmmrEnclosure>,
 }
 
 /// The answers of one simple-polygon case (`fixtures/hard/simple.txt`): the contact status of the
@@ -128,6 +132,35 @@ impl HardAnswers {
                 Ok(_) => Some(words.rational("cmmr")?),
                 Err(_) => None,
             },
+            cmmr_enclosure: match words.get("cmmr_enclosure") {
+                Ok(w) => {
+                    let bound = |i: usize| {
+                        w.get(i)
+                            .and_then(|x| BigRational::from_str(x).ok())
+                            .ok_or_else(|| "bad rational in `cmmr_enclosure`".to_owned())
+                    };
+                    let (lo, hi) = (bound(0)?, bound(1)?);
+                    if lo > hi {
+                        return Err("`cmmr_enclosure`: LO > HI".to_owned());
+                    }
+                    Some(CmmrEnclosure { lo, hi })
+                }
+                Err(_) => None,
+            },
         })
+    }
+
+    /// What is known of the exact CMMR: the stored exact value as the interval `[c, c]`, or the
+    /// stored certified enclosure; `None` if neither is stored. Check a computed value `x` with
+    /// [`CmmrEnclosure::ulps_error`], which bounds its error against every point of the interval.
+    #[must_use]
+    pub fn cmmr_bounds(&self) -> Option<CmmrEnclosure> {
+        match (&self.cmmr, &self.cmmr_enclosure) {
+            (Some(c), _) => Some(CmmrEnclosure {
+                lo: c.clone(),
+                hi: c.clone(),
+            }),
+            (None, e) => e.clone(),
+        }
     }
 }

@@ -10,7 +10,7 @@ use crate::contact::convex_hull;
 use crate::exact::{Frac, Grid, HPt, IPt, Location, edge, edge_count, locate, sq_pp, sq_ps};
 
 /// Squared distance (grid units) from `v` to the filled hull `hull`.
-fn sq_to_hull(v: &IPt, hull: &[IPt]) -> Frac {
+pub(crate) fn sq_to_hull(v: &IPt, hull: &[IPt]) -> Frac {
     match hull.len() {
         0 => Frac::zero(),
         1 => Frac::int(sq_pp(v, &hull[0])),

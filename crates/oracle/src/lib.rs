@@ -27,9 +27,12 @@
 //!   search (box tree, exact bounds; the proof that no optimal pair is
 //!   discarded is in the module doc): [`boundary_distance_pruned`],
 //!   [`filled_distance_pruned`], [`min_vertex_distance_pruned`],
-//!   [`directed_hausdorff_disjoint_pruned`];
+//!   [`directed_hausdorff_disjoint_pruned`]; and a certified enclosure of the CMMR distance
+//!   ([`cmmr_enclosure`], [`CmmrEnclosure`]: exact per-vertex terms rounded down and up, summed
+//!   exactly; the proof is in the module doc), where the exact sum is out of reach;
 //! * rounding and error measurement: [`to_f64_nearest`], [`sqrt_nearest`],
-//!   [`step_ulps`], [`ulp_distance`], [`ulps_error`], [`ulps_error_sqrt`].
+//!   [`step_ulps`], [`ulp_distance`], [`ulps_error`], [`ulps_error_sqrt`],
+//!   [`ulps_error_interval`] (against every point of an enclosure).
 //!
 //! **Input convention:** geometric functions panic on non-finite
 //! coordinates (a NaN in a test input is a bug in the test); [`rat`] itself
@@ -70,6 +73,7 @@
 //! assert!(exact.is_optimal_pair(reported_pair.0, reported_pair.1));
 //! ```
 
+mod cmmr_bound;
 mod contact;
 mod distance;
 mod exact;
@@ -82,6 +86,7 @@ mod rounding;
 mod separation;
 mod shape;
 
+pub use crate::cmmr_bound::{CmmrEnclosure, cmmr_enclosure};
 pub use crate::contact::{Contact, contact_status_convex, contact_status_simple};
 pub use crate::distance::{
     ExactDistance, Feature, boundary_distance, convex_distance, feature_sq_dist,
@@ -116,7 +121,8 @@ pub use crate::pruned::{
     min_vertex_distance_pruned,
 };
 pub use crate::rounding::{
-    sqrt_nearest, step_ulps, to_f64_nearest, ulp_distance, ulps_error, ulps_error_sqrt,
+    sqrt_nearest, step_ulps, to_f64_nearest, ulp_distance, ulps_error, ulps_error_interval,
+    ulps_error_sqrt,
 };
 pub use crate::separation::{chain_distance, closest_visible_vertices_exact, open_segment_meets};
 pub use crate::shape::{is_convex, is_simple, is_strictly_convex, signed_area};

@@ -308,3 +308,48 @@ pub fn ulps_error_sqrt(computed: f64, exact_sq: &BigRational) -> f64 {
     let err = (&c - &lo).abs().max((&c - &hi).abs());
     to_f64_up(&(err / pow2_rat(u_exp)))
 }
+
+/// An upper bound of the error of `computed` against **every** point of the interval
+/// `[lo, hi]`, in ulps: `max over x in [lo, hi] of |computed − x| / ulp(x)`, bounded by
+/// `max(|computed − lo|, |computed − hi|) / ulp(m)` (`m` the point of the interval nearest 0) and
+/// rounded upward. For `lo = hi` it is [`ulps_error`].
+///
+/// Why it bounds every point: `|computed − x|` is convex in `x`, so at most its value at an end;
+/// `ulp(x)` does not decrease with `|x|`, so at least `ulp(m)`. Used to decide "within `b` ulps of
+/// an exact value known only by an enclosure" (the CMMR of the large pairs,
+/// [`crate::cmmr_enclosure`]): passing `≤ b` proves the bound for the exact value; an interval too
+/// wide to decide gives a large bound, so the check fails rather than passes.
+///
+/// # Panics
+/// Panics if `lo > hi`.
+pub fn ulps_error_interval(computed: f64, lo: &BigRational, hi: &BigRational) -> f64 {
+    assert!(lo <= hi, "ulps_error_interval: empty interval");
+    let Some(c) = rat(computed) else {
+        return f64::INFINITY;
+    };
+    let err = (&c - lo).abs().max((&c - hi).abs());
+    to_f64_up(&(err / ulp_rat(&nearest_zero(lo, hi))))
+}
+
+/// The width `hi − lo` of an interval in units of `ulp(m)`, `m` its point nearest 0, rounded
+/// upward: an upper bound of the width in ulps of any of its points.
+pub(crate) fn width_ulps(lo: &BigRational, hi: &BigRational) -> f64 {
+    to_f64_up(&((hi - lo).abs() / ulp_rat(&nearest_zero(lo, hi))))
+}
+
+/// The point of `[lo, hi]` nearest 0, as a magnitude.
+fn nearest_zero(lo: &BigRational, hi: &BigRational) -> BigRational {
+    if lo.is_positive() {
+        lo.clone()
+    } else if hi.is_negative() {
+        -hi.clone()
+    } else {
+        BigRational::zero()
+    }
+}
+
+/// `ulp(x)` as an exact rational (the smallest subnormal for 0).
+fn ulp_rat(x: &BigRational) -> BigRational {
+    let e = if x.is_zero() { i64::MIN } else { floor_log2(x) };
+    pow2_rat(ulp_exp(e))
+}

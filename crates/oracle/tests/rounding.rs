@@ -6,7 +6,7 @@ use num_bigint::BigInt;
 use num_rational::BigRational;
 use polydist_oracle::{
     SplitMix64, rat, sqrt_nearest, step_ulps, to_f64_nearest, ulp_distance, ulps_error,
-    ulps_error_sqrt,
+    ulps_error_interval, ulps_error_sqrt,
 };
 use proptest::prelude::*;
 
@@ -234,6 +234,47 @@ fn ulps_error_values() {
     let exact = r(1.0) + pow2(-300);
     let e = ulps_error(1.0, &exact);
     assert!(e > 0.0 && e < 1e-70, "{e}");
+}
+
+/// The error against an interval bounds the error against each of its points, is exact for a
+/// point interval, and grows with the interval (a wide one cannot pass a tight bound).
+#[test]
+fn ulps_error_interval_values() {
+    let mut rng = SplitMix64::new(0x1e7);
+    for _ in 0..2000 {
+        let x = any_finite(&mut rng).abs();
+        if x == 0.0 || x > 1e300 {
+            continue;
+        }
+        let (a, b) = (step_ulps(x, -3), step_ulps(x, 5));
+        let (lo, hi) = (r(a), r(b));
+        // A point interval: the same as `ulps_error`.
+        assert_eq!(ulps_error_interval(x, &lo, &lo), ulps_error(x, &lo));
+        let bound = ulps_error_interval(x, &lo, &hi);
+        // Every double in the interval, and points between doubles, are covered.
+        for k in -3..=5 {
+            let y = r(step_ulps(x, k));
+            assert!(ulps_error(x, &y) <= bound, "{x:e} {k}");
+            let mid = (&y + r(step_ulps(x, k + 1))) / BigRational::from_integer(2.into());
+            if k < 5 {
+                assert!(ulps_error(x, &mid) <= bound, "{x:e} {k}.5");
+            }
+        }
+        assert!(bound >= 5.0, "{x:e}: {bound}");
+    }
+    // Across a power of two the smaller ulp (of the lower end) is used.
+    let (lo, hi) = (r(step_ulps(1.0, -2)), r(step_ulps(1.0, 2)));
+    assert_eq!(ulps_error_interval(1.0, &lo, &hi), 4.0);
+    // An interval containing 0 measures in the smallest subnormal.
+    assert_eq!(
+        ulps_error_interval(0.0, &r(-0.0), &r(f64::from_bits(3))),
+        3.0
+    );
+    assert_eq!(
+        ulps_error_interval(f64::NAN, &lo, &hi),
+        f64::INFINITY,
+        "NaN never passes"
+    );
 }
 
 #[test]
