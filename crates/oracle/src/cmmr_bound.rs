@@ -281,26 +281,20 @@ fn sq_dist_outside(v: &IPt, h: &[IPt], j: usize) -> Frac {
     assert!(!visible(k), "sq_dist_outside: edge {k} is visible");
     // (c) The run j₀ ..= j₁ (indices in k + 1 ..= k + n − 1, taken mod n).
     let jj = if j > k { j } else { j + n };
-    let (mut lo, mut hi) = (k, jj); // !visible(lo), visible(hi)
-    while hi - lo > 1 {
-        let mid = lo + (hi - lo) / 2;
-        if visible(mid) {
-            hi = mid;
-        } else {
-            lo = mid;
+    // The last index of `lo..hi` where `holds` is true, given it holds at `lo` and not at `hi`.
+    let last = |mut lo: usize, mut hi: usize, holds: &dyn Fn(usize) -> bool| {
+        while hi - lo > 1 {
+            let mid = lo + (hi - lo) / 2;
+            if holds(mid) {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
         }
-    }
-    let j0 = hi;
-    let (mut lo, mut hi) = (jj, k + n); // visible(lo), !visible(hi)
-    while hi - lo > 1 {
-        let mid = lo + (hi - lo) / 2;
-        if visible(mid) {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    let j1 = lo;
+        lo
+    };
+    let j0 = last(k, jj, &|i| !visible(i)) + 1;
+    let j1 = last(jj, k + n, &|i| visible(i));
     // (d) The first edge of the run where F rises at its end (j₁ if none).
     let rises = |i: usize| dot(&at(i + 1).sub(v), &dir(i)).is_positive();
     let (mut lo, mut hi) = (j0, j1); // every edge before lo falls; rises(hi) or hi = j₁

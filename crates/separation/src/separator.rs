@@ -152,6 +152,12 @@ impl Region {
     }
 }
 
+/// The indices `from, from − 1, …, to` (mod `n`): a polygon's vertices clockwise from `from` to `to`.
+fn clockwise(n: usize, from: usize, to: usize) -> Vec<usize> {
+    let steps = (from + n - to) % n;
+    (0..=steps).map(|k| (from + n - k) % n).collect()
+}
+
 /// The internal indices of `p`'s hull vertices, counter-clockwise (Melkman's hull keeps the
 /// polygon's order; a walk along the ring names each hull vertex). `O(n)`.
 fn hull_indices<K: Kernel>(p: &SimplePolygon) -> Option<Vec<usize>> {
@@ -252,13 +258,7 @@ fn facing<K: Kernel>(
         return Ok(Err(Unsupported::Pinched));
     }
     let nq = vq.len();
-    let qs: Vec<usize> = (0..nq)
-        .map(|k| (qb + nq - k) % nq)
-        .take_while({
-            let mut done = false;
-            move |&j| !core::mem::replace(&mut done, j == qt)
-        })
-        .collect();
+    let qs = clockwise(nq, qb, qt);
     let mut r = Region::from_chains(vp, vq, pb, pt, &qs);
     if pb == pt {
         // Pinched at p_b: cut the ring from a vertex of CH(P) other than p_b.
@@ -541,13 +541,7 @@ fn pocket_regions<K: Kernel>(
         return Ok(None);
     };
     // Q clockwise from B to A: the pocket's wall, counter-clockwise around K.
-    let chain: Vec<usize> = (0..nq)
-        .map(|k| (b + nq - k) % nq)
-        .take_while({
-            let mut done = false;
-            move |&j| !core::mem::replace(&mut done, j == a)
-        })
-        .collect();
+    let chain = clockwise(nq, b, a);
     let on_lid: Vec<usize> = (0..np)
         .filter(|&i| K::orient(vq[a], vq[b], vp[i]) == Orientation::Collinear)
         .collect();
