@@ -713,14 +713,24 @@ fn main() {
     table(&mut md, &rows, ("time, random", "time, hard"));
     let _ = writeln!(
         md,
-        "\nSimple polygons (a polygon in a pocket of the other, the separator's containing case, \
-         is not built and not in the suite): **random** = 20 pairs of random 64-vertex stars side \
-         by side; **hard** = the {} cases of `fixtures/hard/simple.txt` (shapes 1–1000 ulps \
-         apart, the same at 1e12, saw-teeth facing tip to notch, interlocked combs 1–1000 ulps \
-         and 1e-9 apart whose hulls meet (Amato's separator route), the same at 1e12, and the \
-         convex `orient_1_far` and `near_parallel_far` pairs above, disjoint, touching or \
-         overlapping). The time includes the intersection check.\n",
-        shard.len()
+        "\nSimple polygons: **random** = 20 pairs of random 64-vertex stars side by side; \
+         **hard** = the {} cases of `fixtures/hard/simple.txt` (shapes 1–1000 ulps apart, the \
+         same at 1e12, saw-teeth facing tip to notch, interlocked combs 1–1000 ulps and 1e-9 \
+         apart whose hulls meet (Amato's separator route), the same at 1e12, the convex \
+         `orient_1_far` and `near_parallel_far` pairs above, disjoint, touching or overlapping, \
+         and {} cases of a polygon in a pocket of the other, one hull inside the other (the \
+         separator's containing case): a convex polygon, a star or a comb in a block's deep \
+         pocket 1, 4 and 1000 ulps, 2^−30 and 2^−40 relative, or 0 from its walls (`pocket`), \
+         pinched at one vertex or along edges on the pocket's lid line (`pocket_lid`), a star or \
+         a small comb dropped into a notch of a comb, 0–4 ulps from a wall or the floor or on the \
+         lid line (`comb_notch`), the same built at 1e8 and 1e12 with gaps of 1–4 ulps there \
+         (`pocket_far`, `comb_notch_far`), each pair in both argument orders). The time includes \
+         the intersection check.\n",
+        shard.len(),
+        scases
+            .iter()
+            .filter(|c| c.family.starts_with("pocket") || c.family.starts_with("comb_notch"))
+            .count(),
     );
     table(&mut md, &srows, ("time, random", "time, hard"));
     let _ = writeln!(
