@@ -654,8 +654,9 @@ fn simple_case(out: &mut String, family: &str, name: &str, p: &[DVec2], q: &[DVe
 /// Then the convex pairs built against plain `f64` near `(1e15, 1e15)` (`orient_1_far`,
 /// `near_parallel_far`: convex polygons are simple; the touching and overlapping ones exercise the
 /// intersection check), and last a polygon in a pocket of the other (one hull inside the other: the
-/// separator's containing case, [`pocket_cases`]; appended with its own seed, so the families
-/// before it do not change).
+/// separator's containing case, [`pocket_cases`], and one built against plain `f64`,
+/// [`pocket_orient_far`]; appended with their own seeds, so the families before them do not
+/// change).
 fn simple_cases(hurting: &[Labelled]) -> String {
     let mut out = String::new();
     out.push_str(
@@ -747,6 +748,7 @@ fn simple_cases(hurting: &[Labelled]) -> String {
         }
     }
     pocket_cases(&mut out);
+    pocket_orient_far(&mut out);
     out
 }
 
@@ -762,21 +764,33 @@ fn pocket_case(
     inner: &[DVec2],
     gap: f64,
 ) {
-    assert!(
-        polydist_oracle::is_simple(outer) && polydist_oracle::is_simple(inner),
-        "{family}/{name}: not simple"
-    );
     let g = rat(gap).expect("a finite gap");
-    assert_eq!(
-        boundary_distance(outer, inner).sq,
-        &g * &g,
-        "{family}/{name}: the gap is not {gap:e}"
-    );
     let want = if gap == 0.0 {
         Contact::Touching
     } else {
         Contact::Disjoint
     };
+    pocket_case_sq(out, family, name, (outer, inner), &(&g * &g), want);
+}
+
+/// [`pocket_case`] with the squared gap exact and the contact given.
+fn pocket_case_sq(
+    out: &mut String,
+    family: &str,
+    name: &str,
+    (outer, inner): (&[DVec2], &[DVec2]),
+    gap_sq: &num_rational::BigRational,
+    want: Contact,
+) {
+    assert!(
+        polydist_oracle::is_simple(outer) && polydist_oracle::is_simple(inner),
+        "{family}/{name}: not simple"
+    );
+    assert_eq!(
+        &boundary_distance(outer, inner).sq,
+        gap_sq,
+        "{family}/{name}: the squared gap is not {gap_sq}"
+    );
     assert_eq!(contact_status_simple(outer, inner), want, "{family}/{name}");
     let bbox = |v: &[DVec2]| {
         v.iter().fold(
@@ -1101,6 +1115,82 @@ fn pocket_cases(out: &mut String) {
             let (c, moved, g) = in_notch(shape, d, 12, (off, -off)).expect("exact");
             let name = format!("{label}_n{}_{}", d.notch, d.name);
             pocket_case(out, "comb_notch_far", &name, &c, &moved, g);
+        }
+    }
+}
+
+/// `pocket_orient_far`: a pocket built against plain `f64`, like `orient_1_far`. Near
+/// `(1e15, 1e15)`, with `d` a primitive integer direction of about 43 bits and `r = (d.1, −d.0)`, the
+/// block is `a + s·d + t·r` over `s ∈ [0, 20]`, `t ∈ [−4, 12]` less the pocket `s ∈ (0, 16]`,
+/// `t ∈ (0, 8)`, open at `s = 0`; its wall `t = 0` is 16 `d` long (about `2^47`). A triangle in the
+/// pocket has its vertex `w` at orientation exactly `k ∈ {−3, −1, 0, 1}` grid units against that wall
+/// (`k/|d| ≈ 2^−43` from its line: inside the pocket, on the wall, or through it), its other two
+/// vertices 4 `r` deeper. Integer coordinates below `2^53` (exact); both argument orders.
+fn pocket_orient_far(out: &mut String) {
+    let mut rng = SplitMix64::new(0x90c4_e7a2);
+    for case_k in 0..3 {
+        let d = loop {
+            let d = (
+                i128::from(rng.range_i64(1 << 42, 1 << 43)),
+                i128::from(rng.range_i64(-(1 << 43), 1 << 43)),
+            );
+            if ext_gcd(d.0, d.1).0.abs() == 1 {
+                break d;
+            }
+        };
+        let a = (
+            1_000_000_000_000_000 + i128::from(rng.range_i64(0, 1 << 30)),
+            1_000_000_000_000_000 + i128::from(rng.range_i64(0, 1 << 30)),
+        );
+        let r = (d.1, -d.0);
+        let at = |s: i128, t: i128| (a.0 + s * d.0 + t * r.0, a.1 + s * d.1 + t * r.1);
+        let mut block: Vec<DVec2> = [
+            (0, -4),
+            (20, -4),
+            (20, 12),
+            (0, 12),
+            (0, 8),
+            (16, 8),
+            (16, 0),
+            (0, 0),
+        ]
+        .iter()
+        .map(|&(s, t)| world(at(s, t)))
+        .collect();
+        if polydist_oracle::signed_area(&block) < num_zero() {
+            block.reverse();
+        }
+        let dd = d.0 * d.0 + d.1 * d.1;
+        for k in [-3i128, -1, 0, 1] {
+            // cross(d, w − a) = k: k < 0 is t > 0, inside the pocket.
+            let w = at_cross(d, k, (0.3 + 0.15 * case_k as f64) * 16.0);
+            let w = (a.0 + w.0, a.1 + w.1);
+            let tri = |sign: i128| {
+                world((
+                    w.0 + 4 * r.0 + sign * 2 * d.0,
+                    w.1 + 4 * r.1 + sign * 2 * d.1,
+                ))
+            };
+            let mut inner = vec![world(w), tri(-1), tri(1)];
+            if sign_orient(inner[0], inner[1], inner[2]) == std::cmp::Ordering::Less {
+                inner.swap(1, 2);
+            }
+            let (gap_sq, want) = match k.signum() {
+                -1 => (
+                    num_rational::BigRational::new((k * k).into(), dd.into()),
+                    Contact::Disjoint,
+                ),
+                0 => (num_zero(), Contact::Touching),
+                _ => (num_zero(), Contact::Overlapping),
+            };
+            pocket_case_sq(
+                out,
+                "pocket_orient_far",
+                &format!("{case_k}_k{k}"),
+                (&block, &inner),
+                &gap_sq,
+                want,
+            );
         }
     }
 }
