@@ -2,7 +2,8 @@
 //! oracle's seeded generators, each with its exact answers computed by this crate (the independent
 //! exact rational brute force), never by an algorithm under test.
 //!
-//! Also writes `fixtures/hard/simple.txt` (simple polygons: hulls disjoint, and interlocked combs) and the large pairs,
+//! Also writes `fixtures/hard/simple.txt` (simple polygons: hulls disjoint, interlocked combs, and a
+//! polygon in a pocket of the other, see `pocket_cases`) and the large pairs,
 //! `large_convex.txt` and `large_simple.txt` (10⁴–10⁵ vertices, stored as a `gen` line that
 //! `polydist_oracle::large_pair` rebuilds, answers from the oracle's pruned exact search).
 //!
@@ -36,12 +37,13 @@ use std::path::PathBuf;
 
 use glam::DVec2;
 use polydist_oracle::{
-    Axis, Contact, Feature, Relation, SplitMix64, boundary_distance, boundary_distance_pruned,
-    cmmr, cmmr_enclosure, cocircular, cocircular_perturbed, comb, contact_status_convex,
-    contact_status_simple, convex_distance, convex_pair, directed_hausdorff_disjoint_pruned,
-    directed_hausdorff_filled, filled_distance_pruned, fingerprint, interleaved_combs,
-    interleaved_combs_ulps, large_pair_from, min_vertex_distance, min_vertex_distance_pruned,
-    offset, parallel_facing, sawtooth, sign_orient, sliver, spiral, star, step_ulps, two_opt,
+    Axis, Contact, Feature, PocketLid, Relation, SplitMix64, boundary_distance,
+    boundary_distance_pruned, cmmr, cmmr_enclosure, cocircular, cocircular_perturbed, comb,
+    contact_status_convex, contact_status_simple, convex_distance, convex_pair,
+    directed_hausdorff_disjoint_pruned, directed_hausdorff_filled, filled_distance_pruned,
+    fingerprint, interleaved_combs, interleaved_combs_ulps, large_pair_from, min_vertex_distance,
+    min_vertex_distance_pruned, offset, parallel_facing, pocket_around, pocket_pair,
+    random_convex_lattice, rat, sawtooth, sign_orient, sliver, spiral, star, step_ulps, two_opt,
     with_gap_ulps,
 };
 
@@ -647,12 +649,14 @@ fn simple_case(out: &mut String, family: &str, name: &str, p: &[DVec2], q: &[DVe
 /// The simple-polygon families: generated shapes side by side 1, 4 and 1000 ulps apart along x or
 /// y, far from the origin, saw-teeth facing each other tip to notch (the hulls' closest features are
 /// lids, so the separable-chains route runs), and interlocked combs (the hulls meet: Amato's
-/// separator route; a polygon in a pocket of the other, the separator's containing case, is not
-/// built and not in the suite).
+/// separator route).
 ///
 /// Then the convex pairs built against plain `f64` near `(1e15, 1e15)` (`orient_1_far`,
 /// `near_parallel_far`: convex polygons are simple; the touching and overlapping ones exercise the
-/// intersection check).
+/// intersection check), and last a polygon in a pocket of the other (one hull inside the other: the
+/// separator's containing case, [`pocket_cases`], and one built against plain `f64`,
+/// [`pocket_orient_far`]; appended with their own seeds, so the families before them do not
+/// change).
 fn simple_cases(hurting: &[Labelled]) -> String {
     let mut out = String::new();
     out.push_str(
@@ -743,5 +747,450 @@ fn simple_cases(hurting: &[Labelled]) -> String {
             simple_case(&mut out, family, name, p, q);
         }
     }
+    pocket_cases(&mut out);
+    pocket_orient_far(&mut out);
     out
+}
+
+/// Both argument orders of a containing-case pair (`outer` as P, then as Q), after checking the
+/// construction's claims with the oracle: both simple, the exact distance is `gap`, the contact is
+/// `Touching` exactly when `gap` is 0, and `inner` lies in `outer`'s bounding box, which is its hull
+/// (blocks and combs are rectangles with notches).
+fn pocket_case(
+    out: &mut String,
+    family: &str,
+    name: &str,
+    outer: &[DVec2],
+    inner: &[DVec2],
+    gap: f64,
+) {
+    let g = rat(gap).expect("a finite gap");
+    let want = if gap == 0.0 {
+        Contact::Touching
+    } else {
+        Contact::Disjoint
+    };
+    pocket_case_sq(out, family, name, (outer, inner), &(&g * &g), want);
+}
+
+/// [`pocket_case`] with the squared gap exact and the contact given.
+fn pocket_case_sq(
+    out: &mut String,
+    family: &str,
+    name: &str,
+    (outer, inner): (&[DVec2], &[DVec2]),
+    gap_sq: &num_rational::BigRational,
+    want: Contact,
+) {
+    assert!(
+        polydist_oracle::is_simple(outer) && polydist_oracle::is_simple(inner),
+        "{family}/{name}: not simple"
+    );
+    assert_eq!(
+        &boundary_distance(outer, inner).sq,
+        gap_sq,
+        "{family}/{name}: the squared gap is not {gap_sq}"
+    );
+    assert_eq!(contact_status_simple(outer, inner), want, "{family}/{name}");
+    let bbox = |v: &[DVec2]| {
+        v.iter().fold(
+            (
+                f64::INFINITY,
+                f64::NEG_INFINITY,
+                f64::INFINITY,
+                f64::NEG_INFINITY,
+            ),
+            |b, w| (b.0.min(w.x), b.1.max(w.x), b.2.min(w.y), b.3.max(w.y)),
+        )
+    };
+    let (o, i) = (bbox(outer), bbox(inner));
+    assert!(
+        o.0 <= i.0 && i.1 <= o.1 && o.2 <= i.2 && i.3 <= o.3,
+        "{family}/{name}: not in the outer hull"
+    );
+    simple_case(out, family, &format!("{name}_outer_p"), outer, inner);
+    simple_case(out, family, &format!("{name}_outer_q"), inner, outer);
+}
+
+/// `v` scaled by `2^s` (exact).
+fn scaled(v: &[DVec2], s: i32) -> Vec<DVec2> {
+    v.iter().map(|&x| x * 2f64.powi(s)).collect()
+}
+
+/// `a + b` if exact.
+fn exact_sum(a: f64, b: f64) -> Option<f64> {
+    let s = a + b;
+    (rat(s)? == rat(a)? + rat(b)?).then_some(s)
+}
+
+/// The ulp of the largest coordinate of `v` in magnitude.
+fn ulp_of_largest(v: &[DVec2]) -> f64 {
+    let big = v
+        .iter()
+        .map(|w| w.x.abs().max(w.y.abs()))
+        .fold(0.0, f64::max);
+    step_ulps(big, 1) - big
+}
+
+/// `v` with a unique topmost vertex (pinched on a lid line) or not.
+fn unique_top(v: &[DVec2]) -> bool {
+    let top = v.iter().map(|w| w.y).fold(f64::NEG_INFINITY, f64::max);
+    v.iter().filter(|w| w.y == top).count() == 1
+}
+
+/// A convex lattice polygon cut flat on top: its lower chain from the lowest of its leftmost vertices
+/// to the lowest of its rightmost, then straight up to one above its top and back across (integer
+/// coordinates, exact): convex, with one horizontal top edge.
+fn flat_top(v: &[DVec2]) -> Vec<DVec2> {
+    let n = v.len();
+    let key = |w: &DVec2| (w.x, w.y);
+    let l = (0..n)
+        .min_by(|&a, &b| key(&v[a]).partial_cmp(&key(&v[b])).expect("finite"))
+        .expect("vertices");
+    let r = (0..n)
+        .min_by(|&a, &b| {
+            (-v[a].x, v[a].y)
+                .partial_cmp(&(-v[b].x, v[b].y))
+                .expect("finite")
+        })
+        .expect("vertices");
+    let top = v.iter().map(|w| w.y).fold(f64::NEG_INFINITY, f64::max) + 1.0;
+    let mut out = Vec::new();
+    let mut i = l;
+    loop {
+        out.push(v[i]);
+        if i == r {
+            break;
+        }
+        i = (i + 1) % n;
+    }
+    out.push(DVec2::new(v[r].x, top));
+    out.push(DVec2::new(v[l].x, top));
+    assert!(polydist_oracle::is_convex(&out), "flat_top: not convex");
+    out
+}
+
+/// Which wall of a comb's notch a dropped polygon nearly touches.
+#[derive(Clone, Copy)]
+enum Wall {
+    Left,
+    Right,
+    Floor,
+}
+
+/// A polygon to drop into a comb's notch (see [`in_notch`]).
+struct Drop<'a> {
+    name: &'static str,
+    inner: &'a [DVec2],
+    /// Notch `k` lies between teeth `k` and `k + 1`.
+    notch: usize,
+    wall: Wall,
+    ulps: u64,
+    on_lid: bool,
+}
+
+/// `d.inner` dropped into notch `d.notch` of `comb(teeth, len, space)`, both scaled by `2^s` and
+/// moved by `origin` (exact or `None`): `d.ulps` ulps of the comb's largest coordinate from
+/// `d.wall`, its top on the notch's lid line (the comb's top hull edge, which carries every tooth
+/// tip) when `d.on_lid`, else a quarter of the way up (on a floor gap, an eighth of a unit from the
+/// left wall). Returns the comb, the moved polygon and the gap.
+fn in_notch(
+    comb_shape: (usize, u32, u32),
+    d: &Drop<'_>,
+    s: i32,
+    origin: (f64, f64),
+) -> Option<(Vec<DVec2>, Vec<DVec2>, f64)> {
+    let (teeth, len, space) = comb_shape;
+    let (k, inner, wall, ulps, on_lid) = (d.notch, d.inner, d.wall, d.ulps, d.on_lid);
+    assert!(k + 1 < teeth, "in_notch: no notch {k}");
+    let c = offset(&scaled(&comb(teeth, len, space), s), origin.0, origin.1)?;
+    let unit = 2f64.powi(s);
+    let pitch = f64::from(1 + space);
+    let a = exact_sum((k as f64 * pitch + 1.0) * unit, origin.0)?;
+    let b = exact_sum((k as f64 + 1.0) * pitch * unit, origin.0)?;
+    let (floor, lid) = (origin.1, exact_sum(f64::from(len) * unit, origin.1)?);
+    let g = ulps as f64 * ulp_of_largest(&c);
+    let inner = scaled(inner, s);
+    let (x0, x1, y0, y1) = inner.iter().fold(
+        (
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+        ),
+        |b, w| (b.0.min(w.x), b.1.max(w.x), b.2.min(w.y), b.3.max(w.y)),
+    );
+    // The translation taking `from` to `to`, if exact.
+    let shift = |from: f64, to: f64| exact_sum(to, -from);
+    let dx = match wall {
+        Wall::Left => shift(x0, exact_sum(a, g)?)?,
+        Wall::Right => shift(x1, exact_sum(b, -g)?)?,
+        Wall::Floor => shift(x0, exact_sum(a, unit / 8.0)?)?,
+    };
+    let dy = match (wall, on_lid) {
+        (Wall::Floor, false) => shift(y0, exact_sum(floor, g)?)?,
+        (Wall::Floor, true) => panic!("in_notch: on the floor and on the lid"),
+        (_, true) => shift(y1, lid)?,
+        (_, false) => shift(y0, exact_sum(floor, exact_sum(lid, -floor)? / 4.0)?)?,
+    };
+    let moved = offset(&inner, dx, dy)?;
+    Some((c, moved, g))
+}
+
+/// A polygon in a pocket of the other: Amato's separator, containing case (`CH(inner) ⊆
+/// CH(outer)`), which `separation` answers through `Route::Separators`. Every pair in both argument
+/// orders, its gap checked with the oracle before the oracle's answers are stored:
+///
+/// - `pocket`: `polydist_oracle::pocket_pair` (a block with a deep rectangular pocket, a tall convex
+///   lattice polygon inside, clear of the lid) with gaps of 1, 4 and 1000 ulps of the coordinates,
+///   relative gaps `2^−30 ≈ 1e-9` and `2^−40 ≈ 1e-12` (`2^22` and `2^12` ulps), and exactly touching
+///   (gap 0: `Intersecting`); and a star and a comb in the open in a block built around them
+///   (`polydist_oracle::pocket_around`).
+/// - `pocket_lid`: the inner polygon's top on the lid's line (the hull edge across the opening),
+///   without touching the block: pinched at one vertex (a star, a convex lattice polygon) or along an
+///   edge (a convex polygon cut flat on top; a comb whose tooth tips all lie on the line), 1 and 4 ulps
+///   from the walls, and once touching the walls.
+/// - `comb_notch`: a star or a small comb (teeth up or down) dropped into a notch of a comb whose
+///   notches all open on the one hull edge through every tooth tip, 0–4 ulps from a wall or the
+///   floor, or pinched / along edges on the notch's lid line.
+/// - `pocket_far`, `comb_notch_far`: the same built around polygons moved to `(1e8, −1e8)` and
+///   `(1e12, −1e12)`, the gaps 1–4 ulps of the coordinates *there* (exact).
+fn pocket_cases(out: &mut String) {
+    let mut rng = SplitMix64::new(0x90c4_e7a1);
+    // In the open: pocket_pair, its grid step learnt from a draw with the least positive gap (rounded
+    // up to one step), then the same draw again with the gap wanted.
+    let gaps: [(&str, u64); 6] = [
+        ("1ulp", 1),
+        ("4ulp", 4),
+        ("1000ulp", 1000),
+        ("1e-9", 1 << 22),
+        ("1e-12", 1 << 12),
+        ("touch", 0),
+    ];
+    let sizes = [12usize, 40, 100];
+    for (k, (label, ulps)) in gaps.into_iter().enumerate() {
+        for n in [sizes[k % 3], sizes[(k + 1) % 3]] {
+            let u = pocket_pair(&mut rng.clone(), n, f64::MIN_POSITIVE).gap;
+            let pp = pocket_pair(&mut rng, n, ulps as f64 * u);
+            assert_eq!(pp.gap, ulps as f64 * u, "pocket_pair: gap");
+            pocket_case(
+                out,
+                "pocket",
+                &format!("n{n}_{label}"),
+                &pp.p,
+                &pp.q,
+                pp.gap,
+            );
+        }
+    }
+    for (name, inner, ulps) in [
+        ("star60_1ulp", star(&mut rng, 60, 12), 1u64),
+        ("star150_4ulp", star(&mut rng, 150, 30), 4),
+        ("comb5_1ulp", comb(5, 3, 2), 1),
+    ] {
+        let pp = pocket_around(&inner, ulps, PocketLid::Clear).expect("exact");
+        pocket_case(out, "pocket", name, &pp.p, &pp.q, pp.gap);
+    }
+
+    // On the lid's line.
+    let pinched_star = |rng: &mut SplitMix64, n: usize| loop {
+        let s = star(rng, n, n / 4);
+        if unique_top(&s) {
+            break s;
+        }
+    };
+    let pinched_convex = |rng: &mut SplitMix64, n: usize| loop {
+        let c = random_convex_lattice(rng, n, 2000);
+        if unique_top(&c) {
+            break c;
+        }
+    };
+    let lid_shapes: Vec<(&str, Vec<DVec2>)> = vec![
+        ("pinched_star40", pinched_star(&mut rng, 40)),
+        ("pinched_convex30", pinched_convex(&mut rng, 30)),
+        (
+            "edge_flat_convex30",
+            flat_top(&random_convex_lattice(&mut rng, 30, 2000)),
+        ),
+        ("edges_comb6", comb(6, 4, 1)),
+    ];
+    for (name, inner) in &lid_shapes {
+        for ulps in [1u64, 4] {
+            let pp = pocket_around(inner, ulps, PocketLid::Touching).expect("exact");
+            pocket_case(
+                out,
+                "pocket_lid",
+                &format!("{name}_{ulps}ulp"),
+                &pp.p,
+                &pp.q,
+                pp.gap,
+            );
+        }
+    }
+    let pp = pocket_around(&lid_shapes[0].1, 0, PocketLid::Touching).expect("exact");
+    pocket_case(
+        out,
+        "pocket_lid",
+        "pinched_star40_touch",
+        &pp.p,
+        &pp.q,
+        pp.gap,
+    );
+
+    // Dropped into a comb's notch: six teeth of height 8 four apart (coordinates up to 26, grid
+    // 2^-48); a star in [−1, 1]², a comb of three teeth halved (2.5 × 1.5), upright or upside down.
+    let shape = (6usize, 8u32, 4u32);
+    let little_comb: Vec<DVec2> = comb(3, 2, 1).iter().map(|&v| v * 0.5).collect();
+    let upside_down: Vec<DVec2> = little_comb.iter().map(|&v| -v).collect();
+    let notch_star = pinched_star(&mut rng, 24);
+    let drop = |name, inner, notch, wall, ulps, on_lid| Drop {
+        name,
+        inner,
+        notch,
+        wall,
+        ulps,
+        on_lid,
+    };
+    let notch_cases = [
+        drop("star_right_1ulp", &notch_star, 1, Wall::Right, 1, false),
+        drop("star_floor_2ulp", &notch_star, 3, Wall::Floor, 2, false),
+        drop(
+            "comb_down_floor_4ulp",
+            &upside_down,
+            2,
+            Wall::Floor,
+            4,
+            false,
+        ),
+        drop("comb_left_1ulp", &little_comb, 0, Wall::Left, 1, false),
+        drop(
+            "star_pinched_right_1ulp",
+            &notch_star,
+            2,
+            Wall::Right,
+            1,
+            true,
+        ),
+        drop(
+            "comb_on_lid_left_3ulp",
+            &little_comb,
+            4,
+            Wall::Left,
+            3,
+            true,
+        ),
+        drop("star_right_touch", &notch_star, 1, Wall::Right, 0, false),
+    ];
+    for d in &notch_cases {
+        let (c, moved, g) = in_notch(shape, d, 0, (0.0, 0.0)).expect("exact");
+        let name = format!("n{}_{}", d.notch, d.name);
+        pocket_case(out, "comb_notch", &name, &c, &moved, g);
+    }
+
+    // Far from the origin: the polygons moved first (exactly), the gaps counted in ulps there.
+    let far_convex = random_convex_lattice(&mut rng, 40, 1 << 12);
+    let far_star = scaled(&pinched_star(&mut rng, 30), 12);
+    for (off, label) in [(1e8f64, "1e8"), (1e12, "1e12")] {
+        for (name, inner, ulps, lid) in [
+            ("convex40_1ulp", &far_convex, 1u64, PocketLid::Clear),
+            ("convex40_4ulp", &far_convex, 4, PocketLid::Clear),
+            ("pinched_star30_1ulp", &far_star, 1, PocketLid::Touching),
+            ("star30_touch", &far_star, 0, PocketLid::Clear),
+        ] {
+            let moved = offset(inner, off, -off).expect("an exact move");
+            let pp = pocket_around(&moved, ulps, lid).expect("exact");
+            pocket_case(
+                out,
+                "pocket_far",
+                &format!("{label}_{name}"),
+                &pp.p,
+                &pp.q,
+                pp.gap,
+            );
+        }
+        for d in &notch_cases[..5] {
+            if matches!(d.name, "comb_left_1ulp" | "star_floor_2ulp") {
+                continue;
+            }
+            let (c, moved, g) = in_notch(shape, d, 12, (off, -off)).expect("exact");
+            let name = format!("{label}_n{}_{}", d.notch, d.name);
+            pocket_case(out, "comb_notch_far", &name, &c, &moved, g);
+        }
+    }
+}
+
+/// `pocket_orient_far`: a pocket built against plain `f64`, like `orient_1_far`. Near
+/// `(1e15, 1e15)`, with `d` a primitive integer direction of about 43 bits and `r = (d.1, −d.0)`, the
+/// block is `a + s·d + t·r` over `s ∈ [0, 20]`, `t ∈ [−4, 12]` less the pocket `s ∈ (0, 16]`,
+/// `t ∈ (0, 8)`, open at `s = 0`; its wall `t = 0` is 16 `d` long (about `2^47`). A triangle in the
+/// pocket has its vertex `w` at orientation exactly `k ∈ {−3, −1, 0, 1}` grid units against that wall
+/// (`k/|d| ≈ 2^−43` from its line: inside the pocket, on the wall, or through it), its other two
+/// vertices 4 `r` deeper. Integer coordinates below `2^53` (exact); both argument orders.
+fn pocket_orient_far(out: &mut String) {
+    let mut rng = SplitMix64::new(0x90c4_e7a2);
+    for case_k in 0..3 {
+        let d = loop {
+            let d = (
+                i128::from(rng.range_i64(1 << 42, 1 << 43)),
+                i128::from(rng.range_i64(-(1 << 43), 1 << 43)),
+            );
+            if ext_gcd(d.0, d.1).0.abs() == 1 {
+                break d;
+            }
+        };
+        let a = (
+            1_000_000_000_000_000 + i128::from(rng.range_i64(0, 1 << 30)),
+            1_000_000_000_000_000 + i128::from(rng.range_i64(0, 1 << 30)),
+        );
+        let r = (d.1, -d.0);
+        let at = |s: i128, t: i128| (a.0 + s * d.0 + t * r.0, a.1 + s * d.1 + t * r.1);
+        let mut block: Vec<DVec2> = [
+            (0, -4),
+            (20, -4),
+            (20, 12),
+            (0, 12),
+            (0, 8),
+            (16, 8),
+            (16, 0),
+            (0, 0),
+        ]
+        .iter()
+        .map(|&(s, t)| world(at(s, t)))
+        .collect();
+        if polydist_oracle::signed_area(&block) < num_zero() {
+            block.reverse();
+        }
+        let dd = d.0 * d.0 + d.1 * d.1;
+        for k in [-3i128, -1, 0, 1] {
+            // cross(d, w − a) = k: k < 0 is t > 0, inside the pocket.
+            let w = at_cross(d, k, (0.3 + 0.15 * case_k as f64) * 16.0);
+            let w = (a.0 + w.0, a.1 + w.1);
+            let tri = |sign: i128| {
+                world((
+                    w.0 + 4 * r.0 + sign * 2 * d.0,
+                    w.1 + 4 * r.1 + sign * 2 * d.1,
+                ))
+            };
+            let mut inner = vec![world(w), tri(-1), tri(1)];
+            if sign_orient(inner[0], inner[1], inner[2]) == std::cmp::Ordering::Less {
+                inner.swap(1, 2);
+            }
+            let (gap_sq, want) = match k.signum() {
+                -1 => (
+                    num_rational::BigRational::new((k * k).into(), dd.into()),
+                    Contact::Disjoint,
+                ),
+                0 => (num_zero(), Contact::Touching),
+                _ => (num_zero(), Contact::Overlapping),
+            };
+            pocket_case_sq(
+                out,
+                "pocket_orient_far",
+                &format!("{case_k}_k{k}"),
+                (&block, &inner),
+                &gap_sq,
+                want,
+            );
+        }
+    }
 }

@@ -48,7 +48,7 @@
 //! [`with_gap_ulps`], [`offset`] / [`offset_family`] / [`OFFSETS`], [`collinear_triples`],
 //! [`near_collinear`], [`short_dyadic`], [`star`], [`comb`],
 //! [`interleaved_combs`], [`interleaved_combs_ulps`], [`spiral`],
-//! [`two_opt`], [`pocket_pair`], [`convex_pair`] with [`Relation`]; large
+//! [`two_opt`], [`pocket_pair`], [`pocket_around`], [`convex_pair`] with [`Relation`]; large
 //! pairs rebuilt bit for bit from a fixture's `gen` line, without library
 //! trigonometry: [`large_pair`] / [`large_pair_from`] (with [`fingerprint`]),
 //! [`dense_circle`], [`cocircular_arc`].
@@ -107,8 +107,8 @@ pub use crate::generators::precision::{
 };
 pub use crate::generators::rng::SplitMix64;
 pub use crate::generators::simple::{
-    CombPair, PocketPair, comb, interleaved_combs, interleaved_combs_ulps, pocket_pair, sawtooth,
-    spiral, star, two_opt,
+    CombPair, PocketLid, PocketPair, comb, interleaved_combs, interleaved_combs_ulps,
+    pocket_around, pocket_pair, sawtooth, spiral, star, two_opt,
 };
 pub use crate::hard::{HardAnswers, SimpleHardAnswers};
 pub use crate::hausdorff::{

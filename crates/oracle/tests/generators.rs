@@ -7,12 +7,13 @@ use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{Signed, Zero};
 use polydist_oracle::{
-    Axis, Contact, Feature, Location, OFFSETS, Relation, SplitMix64, boundary_distance, cocircular,
-    cocircular_perturbed, collinear_triples, comb, contact_status_convex, contact_status_simple,
-    convex_distance, convex_pair, interleaved_combs, interleaved_combs_ulps, is_convex, is_simple,
-    is_strictly_convex, near_collinear, offset, offset_family, parallel_facing, pocket_pair,
-    point_in_polygon, random_convex, random_convex_lattice, rat, short_dyadic, sign_orient,
-    signed_area, sliver, spiral, star, step_ulps, two_opt, with_gap_ulps,
+    Axis, Contact, Feature, Location, OFFSETS, PocketLid, Relation, SplitMix64, boundary_distance,
+    cocircular, cocircular_perturbed, collinear_triples, comb, contact_status_convex,
+    contact_status_simple, convex_distance, convex_pair, interleaved_combs, interleaved_combs_ulps,
+    is_convex, is_simple, is_strictly_convex, near_collinear, offset, offset_family,
+    parallel_facing, pocket_around, pocket_pair, point_in_polygon, random_convex,
+    random_convex_lattice, rat, short_dyadic, sign_orient, signed_area, sliver, spiral, star,
+    step_ulps, two_opt, with_gap_ulps,
 };
 
 fn v(x: f64, y: f64) -> DVec2 {
@@ -559,6 +560,59 @@ fn pocket_pair_guarantees() {
             assert_ne!(point_in_polygon(*x, &pp.p), Location::Inside);
         }
     }
+}
+
+#[test]
+fn pocket_around_guarantees() {
+    let mut rng = SplitMix64::new(110);
+    let shapes = [
+        random_convex_lattice(&mut rng, 9, 1000),
+        star(&mut rng, 14, 4),
+        comb(3, 2, 1),
+    ];
+    let mut far = 0;
+    for inner in &shapes {
+        for o in [0.0, 1e8, 1e12] {
+            let Some(inner) = offset(inner, o, -o) else {
+                continue;
+            };
+            for ulps in [0u64, 1, 4, 1000] {
+                for lid in [PocketLid::Clear, PocketLid::Touching] {
+                    let Some(pp) = pocket_around(&inner, ulps, lid) else {
+                        continue;
+                    };
+                    far += usize::from(o > 0.0);
+                    assert!(is_simple(&pp.p) && ccw(&pp.p) && pp.p.len() == 8);
+                    assert_eq!(pp.q, inner);
+                    // The gap is `ulps` ulps of the block's largest coordinate.
+                    let big =
+                        pp.p.iter()
+                            .map(|v| v.x.abs().max(v.y.abs()))
+                            .fold(0.0, f64::max);
+                    let ulp = step_ulps(big, 1) - big;
+                    assert!(pp.gap == ulps as f64 * ulp || pp.gap == ulps as f64 * ulp / 2.0);
+                    let d = boundary_distance(&pp.p, &pp.q);
+                    assert_eq!(d.sq, r(pp.gap) * r(pp.gap));
+                    let want = if ulps == 0 {
+                        Contact::Touching
+                    } else {
+                        Contact::Disjoint
+                    };
+                    assert_eq!(contact_status_simple(&pp.p, &pp.q), want);
+                    // Inside the hull (the outer box), outside the block.
+                    let hull = [pp.p[0], pp.p[1], pp.p[2], pp.p[7]];
+                    for x in &pp.q {
+                        assert_ne!(point_in_polygon(*x, &hull), Location::Outside);
+                        assert_ne!(point_in_polygon(*x, &pp.p), Location::Inside);
+                    }
+                    // On the lid's line exactly when asked to.
+                    let top = pp.q.iter().map(|v| v.y).fold(f64::NEG_INFINITY, f64::max);
+                    assert_eq!(top == pp.p[3].y, lid == PocketLid::Touching);
+                }
+            }
+        }
+    }
+    assert!(far >= 16, "only {far} far pockets were exact");
 }
 
 #[test]

@@ -6,6 +6,7 @@ use glam::DVec2;
 
 use super::lattice::{L, W, angle_cmp, cross_l, lattice_convex_xy, to_world};
 use super::rng::SplitMix64;
+use crate::exact::rat_finite;
 use crate::rounding::ldexp;
 
 /// Attempts before a randomized construction gives up.
@@ -292,8 +293,9 @@ pub struct PocketPair {
     /// Simple ccw 8-vertex polygon: a block with a deep rectangular pocket
     /// open at the top.
     pub p: Vec<DVec2>,
-    /// Strictly convex ccw polygon inside the pocket (inside the convex hull
-    /// of `p`, outside `p`).
+    /// The polygon inside the pocket (inside the convex hull of `p`, outside
+    /// `p`): strictly convex ccw for [`pocket_pair`], the caller's polygon
+    /// for [`pocket_around`].
     pub q: Vec<DVec2>,
     /// Exact distance between `p` and `q` (the clearance to the pocket's
     /// walls and floor).
@@ -342,6 +344,119 @@ pub fn pocket_pair(rng: &mut SplitMix64, n_q: usize, gap: f64) -> PocketPair {
         .map(|&(x, y)| DVec2::new(x as f64, y as f64))
         .collect();
     PocketPair { p, q, gap: g }
+}
+
+/// Where the polygon of [`pocket_around`] sits against its pocket's lid (the
+/// hull edge across the pocket's opening).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum PocketLid {
+    /// The opening lies the wall thickness above the polygon's top.
+    Clear,
+    /// The opening lies at the polygon's top level: its topmost vertices are on
+    /// the lid's line (one vertex: pinched; two: along an edge), strictly
+    /// between the pocket's two upper corners.
+    Touching,
+}
+
+/// An 8-vertex ccw block with a rectangular pocket open at the top, built
+/// around the caller's simple polygon `inner`: the pocket's left and right
+/// walls and its floor are exactly `ulps` grid steps `u` from `inner`'s
+/// leftmost, rightmost and lowest points, the opening at `inner`'s top level
+/// ([`PocketLid::Touching`]) or the wall thickness above it
+/// ([`PocketLid::Clear`]). `u` is the ulp of the largest magnitude among the
+/// block's coordinates before the gap (`inner`'s bounding box widened by the
+/// wall), so a few `ulps` are a few ulps of the coordinates, also when
+/// `inner` lies far from the origin. The wall thickness is a power of two
+/// near a quarter of `inner`'s larger extent.
+///
+/// The exact distance between the two is `ulps · u` (returned in
+/// [`PocketPair::gap`]): `Disjoint` for `ulps > 0`, `Touching` for 0; the
+/// lid is no edge of the block, so touching its line is no contact. `inner`
+/// lies in the block's convex hull (its bounding rectangle): Amato's
+/// containing case.
+///
+/// Returns `None` if some coordinate of the block would not be exact (`inner`
+/// off the grid of `u`, or the gap carrying a coordinate into the next
+/// binade): nothing is rounded.
+///
+/// # Panics
+/// Panics if `inner` has fewer than 3 vertices, a coordinate is not finite,
+/// its bounding box is degenerate, or the gap exceeds a quarter of the wall.
+pub fn pocket_around(inner: &[DVec2], ulps: u64, lid: PocketLid) -> Option<PocketPair> {
+    assert!(inner.len() >= 3, "pocket_around: at least 3 vertices");
+    assert!(
+        inner.iter().all(|v| v.is_finite()),
+        "pocket_around: finite coordinates"
+    );
+    let (x0, x1) = inner
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |a, v| {
+            (a.0.min(v.x), a.1.max(v.x))
+        });
+    let (y0, y1) = inner
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |a, v| {
+            (a.0.min(v.y), a.1.max(v.y))
+        });
+    let size = (x1 - x0).max(y1 - y0);
+    assert!(size > 0.0, "pocket_around: degenerate polygon");
+    // A power of two in (size/8, size/4].
+    let mut k = 0i32;
+    while ldexp(1.0, k) > size / 4.0 {
+        k -= 1;
+    }
+    while ldexp(1.0, k + 1) <= size / 4.0 {
+        k += 1;
+    }
+    let wall = ldexp(1.0, k);
+    // The grid: one ulp of the largest magnitude the block reaches before the gap.
+    let m = x0.abs().max(x1.abs()).max(y0.abs()).max(y1.abs()) + wall;
+    let mut e = 0i32;
+    while ldexp(1.0, e) > m {
+        e -= 1;
+    }
+    while ldexp(1.0, e + 1) <= m {
+        e += 1;
+    }
+    let u = ldexp(1.0, e - 52);
+    assert!(ulps < 1 << 50, "pocket_around: too many ulps");
+    let g = ulps as f64 * u;
+    assert!(
+        g <= wall / 4.0,
+        "pocket_around: gap beyond a quarter of the wall"
+    );
+    // a + b, or None if the sum is not exact.
+    let add = |a: f64, b: f64| -> Option<f64> {
+        let s = a + b;
+        (s.is_finite() && rat_finite(s) == rat_finite(a) + rat_finite(b)).then_some(s)
+    };
+    if inner
+        .iter()
+        .any(|v| ldexp(v.x, 52 - e).fract() != 0.0 || ldexp(v.y, 52 - e).fract() != 0.0)
+    {
+        return None;
+    }
+    let (xl, xr, yf) = (add(x0, -g)?, add(x1, g)?, add(y0, -g)?);
+    let y_top = match lid {
+        PocketLid::Clear => add(y1, wall)?,
+        PocketLid::Touching => y1,
+    };
+    let (x_out0, x_out1, y_out0) = (add(xl, -wall)?, add(xr, wall)?, add(yf, -wall)?);
+    let p = vec![
+        DVec2::new(x_out0, y_out0),
+        DVec2::new(x_out1, y_out0),
+        DVec2::new(x_out1, y_top),
+        DVec2::new(xr, y_top),
+        DVec2::new(xr, yf),
+        DVec2::new(xl, yf),
+        DVec2::new(xl, y_top),
+        DVec2::new(x_out0, y_top),
+    ];
+    Some(PocketPair {
+        p,
+        q: inner.to_vec(),
+        gap: g,
+    })
 }
 
 /// A saw-tooth slab: the rectangle `[0, 4] × [0, 2t]` with `t` saw teeth on its right side, tips at
