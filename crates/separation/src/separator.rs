@@ -27,9 +27,9 @@ use glam::DVec2;
 use polydist_polygon::predicates::{Dist2, Kernel, Orientation, Sign};
 use polydist_polygon::{Feature, SimplePolygon, convex_hull_with};
 
-use crate::brute::scan;
 #[cfg(test)]
 use crate::brute::separation_brute;
+use crate::brute::{scan, scan_pruned};
 use crate::error::SeparationError;
 use crate::geodesic::{Hit, first_hit, merge_collinear, shortest_path};
 use crate::param::{Affine, Edge, Param};
@@ -1099,7 +1099,13 @@ fn solve_pass<K: Kernel>(
                 }
                 None => {
                     stats.subproblems_scanned += 1;
-                    scan::<K>(&pcv, &qcv, true)
+                    // Large subproblems (the containing case's few long subchains): the same scan,
+                    // pruned exactly by bounding boxes.
+                    if pcv.len() * qcv.len() > 256 {
+                        scan_pruned::<K>(&pcv, &qcv, true)
+                    } else {
+                        scan::<K>(&pcv, &qcv, true)
+                    }
                 }
             };
             // Chain features to internal features.
@@ -2145,5 +2151,59 @@ mod tests {
                 check_pair_v::<Exact>(a, b, true).unwrap_or_else(|e| panic!("{tip}: {e}"));
             }
         }
+    }
+
+    /// The pruned scan is the scan, feature for feature (ties included), on random and lattice
+    /// chains of 1–80 vertices, with and without `interior_only`; and it prunes on far-apart chains.
+    #[test]
+    fn pruned_scan_is_the_scan() {
+        let mut rng = SplitMix64::new(0xb0c5);
+        for round in 0..500 {
+            let lattice = rng.coin();
+            let pt = |rng: &mut SplitMix64, dx: f64| {
+                if lattice {
+                    DVec2::new(
+                        rng.range_i64(-6, 7) as f64 + dx,
+                        rng.range_i64(-6, 7) as f64,
+                    )
+                } else {
+                    DVec2::new(rng.unit_f64() + dx, rng.unit_f64())
+                }
+            };
+            let dx = [0.0, 3.0, 40.0][round % 3];
+            let p: Vec<DVec2> = (0..1 + rng.index(80)).map(|_| pt(&mut rng, 0.0)).collect();
+            let q: Vec<DVec2> = (0..1 + rng.index(80)).map(|_| pt(&mut rng, dx)).collect();
+            for interior in [true, false] {
+                for (a, b) in [
+                    (
+                        scan::<Robust>(&p, &q, interior),
+                        scan_pruned::<Robust>(&p, &q, interior),
+                    ),
+                    (
+                        scan::<Exact>(&p, &q, interior),
+                        scan_pruned::<Exact>(&p, &q, interior),
+                    ),
+                ] {
+                    assert_eq!(
+                        (a.feature_p, a.feature_q),
+                        (b.feature_p, b.feature_q),
+                        "{p:?} {q:?}"
+                    );
+                    assert_eq!(a.squared_distance.to_bits(), b.squared_distance.to_bits());
+                }
+            }
+            let _ = scan_pruned::<Fast>(&p, &q, true);
+        }
+        // Pruning happens: two long chains far apart on a line compare far fewer pairs.
+        use polydist_polygon::predicates::{Counted, predicate_counts, reset_predicate_counts};
+        let p: Vec<DVec2> = (0..400).map(|k| DVec2::new(k as f64, 0.0)).collect();
+        let q: Vec<DVec2> = (0..400).map(|k| DVec2::new(k as f64 + 0.5, 1.0)).collect();
+        reset_predicate_counts();
+        let _ = scan::<Counted<Robust>>(&p, &q, true);
+        let full = predicate_counts().total();
+        reset_predicate_counts();
+        let _ = scan_pruned::<Counted<Robust>>(&p, &q, true);
+        let pruned = predicate_counts().total();
+        assert!(pruned * 20 < full, "{pruned} against {full}");
     }
 }
