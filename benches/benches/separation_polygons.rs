@@ -11,7 +11,12 @@
 //!   so the query goes through Amato's separator (triangulation of the region between the facing
 //!   chains, geodesic, extensions, greedy pruning, subchains). Every clearance ties exactly;
 //! - `polygons/interlocked_combs_jittered`: the same combs with every vertex moved by a random dyadic
-//!   amount below 1/64 in x and y (clearances between 1/8 − 1/32 and 1/8 + 1/32, no exact ties).
+//!   amount below 1/64 in x and y (clearances between 1/8 − 1/32 and 1/8 + 1/32, no exact ties);
+//! - `polygons/pocket`: a spiky star (`N/2` vertices, radii 1 and 0.5) in the pocket of a "C" (an
+//!   outer arc of radius 4 and a wavy inner arc of radii 2 and 2.5, `N/2` vertices, open over half a
+//!   radian): one hull inside the other, the separator's containing case (two passes). Up to 4,096
+//!   vertices only: the subproblems are few and large and are scanned, so the query grows
+//!   quadratically there (see `docs/algorithms/separator.md`).
 //!
 //! Series, per `N`:
 //! - `validate`: building both `SimplePolygon`s (exact simplicity sweep), which a caller does once;
@@ -127,6 +132,34 @@ fn interlocked_combs_jittered(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
     (jitter(&a), jitter(&b))
 }
 
+/// A spiky star in the pocket of a "C" (see the module docs), `n` vertices in all.
+fn pocket(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
+    let half = (n / 2).max(8);
+    let (n_out, n_in) = (half / 4, half - half / 4);
+    let gap = 0.5;
+    let at = |a: f64, r: f64| DVec2::new(a.cos(), a.sin()) * r;
+    let span = TAU - gap;
+    let mut c: Vec<DVec2> = (0..n_out)
+        .map(|k| at(gap / 2.0 + span * k as f64 / (n_out - 1) as f64, 4.0))
+        .collect();
+    c.extend((0..n_in).map(|k| {
+        let r = if k % 2 == 0 { 2.0 } else { 2.5 };
+        at(
+            gap / 2.0 + span * (n_in - 1 - k) as f64 / (n_in - 1) as f64,
+            r,
+        )
+    }));
+    let star: Vec<DVec2> = (0..half)
+        .map(|k| {
+            at(
+                TAU * k as f64 / half as f64,
+                if k % 2 == 0 { 1.0 } else { 0.5 },
+            )
+        })
+        .collect();
+    (star, c)
+}
+
 /// A slab `[0, 4] × [0, h]` with `t` saw teeth on its right side (tips at `x = 5`), and its mirror
 /// image right of it, shifted by half a tooth so that tips face notches, `1/4` beyond the tips.
 fn sawteeth(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
@@ -164,10 +197,10 @@ fn query<K: Kernel>(p: &SimplePolygon, q: &SimplePolygon) -> f64 {
         .distance()
 }
 
-fn run(c: &mut Criterion, name: &str, make: fn(usize) -> (Vec<DVec2>, Vec<DVec2>)) {
+fn run(c: &mut Criterion, name: &str, make: fn(usize) -> (Vec<DVec2>, Vec<DVec2>), max_n: usize) {
     let mut group = c.benchmark_group(name);
     configure(&mut group);
-    for n in SIZES {
+    for n in SIZES.into_iter().filter(|&n| n <= max_n) {
         let (a, b) = make(n);
         let (p, q) = (
             SimplePolygon::try_new(&a).expect("simple"),
@@ -251,16 +284,24 @@ fn run(c: &mut Criterion, name: &str, make: fn(usize) -> (Vec<DVec2>, Vec<DVec2>
 
 fn benches() {
     let mut c = Criterion::default().configure_from_args();
-    run(&mut c, "polygons/stars", stars);
-    run(&mut c, "polygons/spirals", spirals);
-    run(&mut c, "polygons/combs", combs);
-    run(&mut c, "polygons/sawteeth", sawteeth);
-    run(&mut c, "polygons/interlocked_combs", interlocked_combs);
+    run(&mut c, "polygons/stars", stars, usize::MAX);
+    run(&mut c, "polygons/spirals", spirals, usize::MAX);
+    run(&mut c, "polygons/combs", combs, usize::MAX);
+    run(&mut c, "polygons/sawteeth", sawteeth, usize::MAX);
+    run(
+        &mut c,
+        "polygons/interlocked_combs",
+        interlocked_combs,
+        usize::MAX,
+    );
     run(
         &mut c,
         "polygons/interlocked_combs_jittered",
         interlocked_combs_jittered,
+        usize::MAX,
     );
+    // Quadratic today (its subproblems are scanned, see docs/algorithms/separator.md): up to 4,096.
+    run(&mut c, "polygons/pocket", pocket, 4096);
     c.final_summary();
 }
 
