@@ -180,7 +180,9 @@ fn hull_indices<K: Kernel>(p: &SimplePolygon) -> Option<Vec<usize>> {
     Some(out)
 }
 
-/// Step 1 and 2: the bridges of `CH(P ∪ Q)`, the facing chains and the ring of `R`.
+/// Step 1 and 2: the bridges of `CH(P ∪ Q)`, the facing chains and the ring of `R` (with its cut
+/// when `P` is pinched). `Err` when one hull contains the other, or `Q` is the pinched polygon:
+/// [`regions`] takes over.
 ///
 /// `O(n + m)` for the hulls and the ring, `O(h log h)` for the hull of the `h` hull vertices.
 fn facing<K: Kernel>(
