@@ -497,6 +497,25 @@ fn world(v: (i128, i128)) -> DVec2 {
     DVec2::new(v.0 as f64, v.1 as f64)
 }
 
+/// A primitive direction `d` with components of about 43 bits and a base point `a` near
+/// `(1e15, 1e15)`, drawn from `rng` (the far families' edge `a + M·d`).
+fn far_direction(rng: &mut SplitMix64) -> ((i128, i128), (i128, i128)) {
+    let d = loop {
+        let d = (
+            i128::from(rng.range_i64(1 << 42, 1 << 43)),
+            i128::from(rng.range_i64(-(1 << 43), 1 << 43)),
+        );
+        if ext_gcd(d.0, d.1).0.abs() == 1 {
+            break d;
+        }
+    };
+    let a = (
+        1_000_000_000_000_000 + i128::from(rng.range_i64(0, 1 << 30)),
+        1_000_000_000_000_000 + i128::from(rng.range_i64(0, 1 << 30)),
+    );
+    (d, a)
+}
+
 /// Families built to defeat plain `f64` predicates (issue 8: measure the Fast kernel where it
 /// hurts), every answer from the exact oracle as for the others:
 ///
@@ -514,19 +533,7 @@ fn fast_hurting(rng: &mut SplitMix64) -> Vec<Labelled> {
     let mut out = Vec::new();
     for case_k in 0..5 {
         // A primitive direction with ~43-bit components, a base point near (1e15, 1e15).
-        let d = loop {
-            let d = (
-                i128::from(rng.range_i64(1 << 42, 1 << 43)),
-                i128::from(rng.range_i64(-(1 << 43), 1 << 43)),
-            );
-            if ext_gcd(d.0, d.1).0.abs() == 1 {
-                break d;
-            }
-        };
-        let a = (
-            1_000_000_000_000_000 + i128::from(rng.range_i64(0, 1 << 30)),
-            1_000_000_000_000_000 + i128::from(rng.range_i64(0, 1 << 30)),
-        );
+        let (d, a) = far_direction(rng);
         // The edge ab is M·d: the integer points at orientation k against the line (spaced by d)
         // fall M times along the edge.
         let m = 16;
@@ -1129,19 +1136,7 @@ fn pocket_cases(out: &mut String) {
 fn pocket_orient_far(out: &mut String) {
     let mut rng = SplitMix64::new(0x90c4_e7a2);
     for case_k in 0..3 {
-        let d = loop {
-            let d = (
-                i128::from(rng.range_i64(1 << 42, 1 << 43)),
-                i128::from(rng.range_i64(-(1 << 43), 1 << 43)),
-            );
-            if ext_gcd(d.0, d.1).0.abs() == 1 {
-                break d;
-            }
-        };
-        let a = (
-            1_000_000_000_000_000 + i128::from(rng.range_i64(0, 1 << 30)),
-            1_000_000_000_000_000 + i128::from(rng.range_i64(0, 1 << 30)),
-        );
+        let (d, a) = far_direction(&mut rng);
         let r = (d.1, -d.0);
         let at = |s: i128, t: i128| (a.0 + s * d.0 + t * r.0, a.1 + s * d.1 + t * r.1);
         let mut block: Vec<DVec2> = [

@@ -302,6 +302,22 @@ pub struct PocketPair {
     pub gap: f64,
 }
 
+/// The 8-vertex block of the pocket generators, counter-clockwise: the outer box `[x0, x1] ×
+/// [y0, top]` (`outer`) with a rectangular pocket `[xl, xr] × [yf, top]` (`pocket`) open at the top.
+fn pocket_block(outer: [f64; 4], pocket: [f64; 3]) -> Vec<DVec2> {
+    let ([x0, x1, y0, top], [xl, xr, yf]) = (outer, pocket);
+    vec![
+        DVec2::new(x0, y0),
+        DVec2::new(x1, y0),
+        DVec2::new(x1, top),
+        DVec2::new(xr, top),
+        DVec2::new(xr, yf),
+        DVec2::new(xl, yf),
+        DVec2::new(xl, top),
+        DVec2::new(x0, top),
+    ]
+}
+
 /// A polygon `p` with a deep pocket and a tall strictly convex polygon `q`
 /// (`n_q >= 3` vertices) sitting in it without touching: `q`'s leftmost,
 /// rightmost and lowest points are exactly `gap` from the pocket's left wall,
@@ -329,16 +345,7 @@ pub fn pocket_pair(rng: &mut SplitMix64, n_q: usize, gap: f64) -> PocketPair {
     assert!(g < 0.25, "pocket_pair: gap must be below 0.25");
     let (xl, xr, yf) = (-g, wq + g, -g);
     let (x_out0, x_out1, y_out0, y_top) = (xl - wall, xr + wall, yf - wall, hq + wall);
-    let p = vec![
-        DVec2::new(x_out0, y_out0),
-        DVec2::new(x_out1, y_out0),
-        DVec2::new(x_out1, y_top),
-        DVec2::new(xr, y_top),
-        DVec2::new(xr, yf),
-        DVec2::new(xl, yf),
-        DVec2::new(xl, y_top),
-        DVec2::new(x_out0, y_top),
-    ];
+    let p = pocket_block([x_out0, x_out1, y_out0, y_top], [xl, xr, yf]);
     let q = lat
         .iter()
         .map(|&(x, y)| DVec2::new(x as f64, y as f64))
@@ -442,16 +449,7 @@ pub fn pocket_around(inner: &[DVec2], ulps: u64, lid: PocketLid) -> Option<Pocke
         PocketLid::Touching => y1,
     };
     let (x_out0, x_out1, y_out0) = (add(xl, -wall)?, add(xr, wall)?, add(yf, -wall)?);
-    let p = vec![
-        DVec2::new(x_out0, y_out0),
-        DVec2::new(x_out1, y_out0),
-        DVec2::new(x_out1, y_top),
-        DVec2::new(xr, y_top),
-        DVec2::new(xr, yf),
-        DVec2::new(xl, yf),
-        DVec2::new(xl, y_top),
-        DVec2::new(x_out0, y_top),
-    ];
+    let p = pocket_block([x_out0, x_out1, y_out0, y_top], [xl, xr, yf]);
     Some(PocketPair {
         p,
         q: inner.to_vec(),
