@@ -93,14 +93,14 @@ fn separation_frames_match_the_brute_force_and_the_run_goes_on() {
         assert_eq!(s.distance, 12.0 - 2.0 * f.t);
     }
     // The combs interlock: disjoint, but their hulls meet: Amato's separator answers.
-    let comb = |v: &[[i32; 2]]| {
+    let poly = |v: &[[i32; 2]]| {
         let v: Vec<DVec2> = v
             .iter()
             .map(|&[x, y]| DVec2::new(f64::from(x), f64::from(y)))
             .collect();
         SimplePolygon::try_new(&v).unwrap()
     };
-    let ca = comb(&[
+    let ca = poly(&[
         [0, 20],
         [9, 20],
         [9, 24],
@@ -114,7 +114,7 @@ fn separation_frames_match_the_brute_force_and_the_run_goes_on() {
         [1, 24],
         [0, 24],
     ]);
-    let cb = comb(&[
+    let cb = poly(&[
         [2, 22],
         [3, 22],
         [3, 25],
@@ -124,53 +124,34 @@ fn separation_frames_match_the_brute_force_and_the_run_goes_on() {
         [7, 26],
         [2, 26],
     ]);
-    let Ok(PolygonSeparation::Separated { pair, .. }) =
-        polygon_separation_brute::<Robust>(&ca, &cb)
-    else {
-        panic!("the combs are disjoint");
-    };
-    assert!(!combs.frames.is_empty());
-    for f in &combs.frames {
-        assert_eq!(f.status, Some(Status::Disjoint));
-        let s = f.separation.expect("separation");
-        assert_eq!(s.distance, pair.distance);
-        assert_eq!(s.route, "separators");
-    }
-    // The pebble in u's pocket (the containing case): answered by the separators, exactly the brute
-    // force's distance (neither body moves).
+    // Static pairs answered by the separators: every frame disjoint at the brute force's distance.
+    let static_separators =
+        |frames: &[polydist_scene::FrameResult], a: &SimplePolygon, b: &SimplePolygon| {
+            let Ok(PolygonSeparation::Separated { pair, .. }) =
+                polygon_separation_brute::<Robust>(a, b)
+            else {
+                panic!("the bodies are disjoint");
+            };
+            assert!(!frames.is_empty());
+            for f in frames {
+                assert_eq!(f.status, Some(Status::Disjoint));
+                let s = f.separation.expect("separation");
+                assert_eq!(s.distance, pair.distance);
+                assert_eq!(s.route, "separators");
+            }
+        };
+    static_separators(&combs.frames, &ca, &cb);
+    // The pebble in u's pocket (the containing case).
     let pebble = report
         .pairs
         .iter()
         .find(|p| p.b == "pebble")
         .expect("pair u–pebble");
-    let (u, pb) = (
-        SimplePolygon::try_from(
-            &[
-                [0.0, 0.0],
-                [10.0, 0.0],
-                [10.0, 10.0],
-                [0.0, 10.0],
-                [0.0, 7.0],
-                [6.0, 7.0],
-                [6.0, 3.0],
-                [0.0, 3.0],
-            ][..],
-        )
-        .expect("u"),
-        SimplePolygon::try_from(&[[1.0, 4.0], [2.0, 4.0], [2.0, 6.0], [1.0, 6.0]][..])
-            .expect("pebble"),
+    static_separators(
+        &pebble.frames,
+        &su,
+        &poly(&[[1, 4], [2, 4], [2, 6], [1, 6]]),
     );
-    let Ok(PolygonSeparation::Separated { pair, .. }) = polygon_separation_brute::<Robust>(&u, &pb)
-    else {
-        panic!("u and the pebble are disjoint");
-    };
-    assert!(!pebble.frames.is_empty());
-    for f in &pebble.frames {
-        assert_eq!(f.status, Some(Status::Disjoint));
-        let s = f.separation.expect("separation");
-        assert_eq!(s.distance, pair.distance);
-        assert_eq!(s.route, "separators");
-    }
     assert!(!pebble.failed && !combs.failed && !ul.failed && !report.failed);
     // Only the asked work: separation, no convex distance of any kind.
     let c = report.costs;

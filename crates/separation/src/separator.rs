@@ -1067,12 +1067,12 @@ fn solve_pass<K: Kernel>(
             Some(g) if qlo_all <= g && g < qhi_all => [(qlo_all, g), (g + 1, qhi_all)],
             _ => [(qlo_all, qhi_all), (1, 0)],
         };
+        pcv.clear();
+        pcv.extend((plo..=phi).map(|k| vp[(r.pb + k) % r.np]));
         for (qlo, qhi) in parts {
             if qlo > qhi {
                 continue;
             }
-            pcv.clear();
-            pcv.extend((plo..=phi).map(|k| vp[(r.pb + k) % r.np]));
             qcv.clear();
             qcv.extend((qlo..=qhi).map(|k| r.ring[k]));
             stats.subproblem_vertices += pcv.len() + qcv.len();
