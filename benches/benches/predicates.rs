@@ -1,5 +1,5 @@
-//! What accuracy costs in time, predicate by predicate: Fast, Robust and Exact kernels on random and
-//! near-degenerate inputs, as a dependent chain (each sign picks the next input, so latency counts) and
+//! What accuracy costs in time, predicate by predicate: Fast, Robust and Exact kernels on random,
+//! near-degenerate and coarse-grid (exactly tied) inputs, as a dependent chain (each sign picks the next input, so latency counts) and
 //! as throughput (independent calls). `robust::orient2d` (Shewchuk's predicates, not inlined) is the
 //! baseline for orientation.
 
@@ -40,6 +40,15 @@ fn degenerate_points(seed: u64) -> Vec<DVec2> {
         .collect()
 }
 
+/// Points of a coarse grid far from the origin (`1000 + k/8`, `k < 8`): exact ties and zeros on almost
+/// every call, which no filter certifies; the Robust kernel's error-free `f64` stage decides them, as the
+/// arithmetic on such coordinates does not round.
+fn grid_points(seed: u64) -> Vec<DVec2> {
+    let mut rng = SplitMix64::new(seed);
+    let mut at = || 1000.0 + rng.below(8) as f64 / 8.0;
+    (0..N + 16).map(|_| DVec2::new(at(), at())).collect()
+}
+
 /// Each result decides which point the next call uses: the latency of the whole predicate counts.
 fn chain(pts: &[DVec2], f: impl Fn(DVec2, DVec2, DVec2, DVec2) -> i8) -> usize {
     let mut k = 0usize;
@@ -70,6 +79,7 @@ macro_rules! predicate_group {
         for (input, pts) in [
             ("random", random_points(1)),
             ("degenerate", degenerate_points(2)),
+            ("grid", grid_points(3)),
         ] {
             let mut g = $c.benchmark_group(format!("predicates/{}/{}", $name, input));
             g.throughput(Throughput::Elements(N as u64));

@@ -5,7 +5,7 @@ use core::fmt::Debug;
 
 use glam::DVec2;
 
-use crate::poly::{Polynomial, sign_exact, sign_fast, sign_robust};
+use crate::poly::{Polynomial, sign_adaptive, sign_exact, sign_fast, sign_robust};
 use crate::ring::{Ring, U};
 use crate::{Orientation, Sign};
 
@@ -370,7 +370,7 @@ impl Kernel for Robust {
         let t2 = -((b.y - a.y) * (d.y - c.y));
         match filter_products(t1, t2) {
             Some(s) => s,
-            None => sign_exact(&Dot, &[a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y]),
+            None => sign_adaptive(&Dot, &[a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y]),
         }
     }
 
@@ -380,7 +380,7 @@ impl Kernel for Robust {
         let t2 = (b.y - a.y) * (d.x - c.x);
         match filter_products(t1, t2) {
             Some(s) => s,
-            None => sign_exact(&Cross, &[a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y]),
+            None => sign_adaptive(&Cross, &[a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y]),
         }
     }
 
@@ -390,7 +390,7 @@ impl Kernel for Robust {
         match filter_squares(ax * ax + ay * ay, bx * bx + by * by) {
             Some(s) => s.to_ordering(),
             None if a == b => Ordering::Equal,
-            None => sign_exact(&Nearer, &[p.x, p.y, a.x, a.y, b.x, b.y]).to_ordering(),
+            None => sign_adaptive(&Nearer, &[p.x, p.y, a.x, a.y, b.x, b.y]).to_ordering(),
         }
     }
 
@@ -401,7 +401,7 @@ impl Kernel for Robust {
             Some(s) => s.to_ordering(),
             // The same pair either way round (a candidate against itself): equal, with no exact stage.
             None if (a == c && b == d) || (a == d && b == c) => Ordering::Equal,
-            None => sign_exact(&Dist4, &[a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y]).to_ordering(),
+            None => sign_adaptive(&Dist4, &[a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y]).to_ordering(),
         }
     }
 }

@@ -6,8 +6,9 @@
 //!
 //! - [`Fast`]: plain `f64`. Fastest; may decide wrongly on near-degenerate input.
 //! - [`Robust`] (the default everywhere): exact signs by adaptive evaluation. An inlined floating-point
-//!   filter with a proved error bound decides almost every call; exact expansion arithmetic
-//!   (Shewchuk 1997) runs only when the filter cannot decide.
+//!   filter with a proved error bound decides almost every call; when it cannot (exact zeros and ties), an
+//!   `f64` evaluation checked exact operation by operation ([`ErrorFree`]) decides on coarse inputs, and
+//!   exact expansion arithmetic (Shewchuk 1997) runs only when that evaluation rounded.
 //! - [`Exact`]: exact arithmetic for every sign, and exact rational constructions ([`exact`]).
 //!
 //! The named predicates are [`Kernel::orient`], [`Kernel::dot_sign`], [`Kernel::cross_sign`],
@@ -54,5 +55,5 @@ pub use num_bigint::BigInt;
 pub use num_rational::BigRational;
 pub use poly::{Estimate, MAX_DEGREE, Polynomial, estimate_value, round_value};
 pub use range::{MAX_COORDINATE, is_valid_coordinate};
-pub use ring::{Bounded, Ring};
+pub use ring::{Bounded, ErrorFree, Ring};
 pub use sign::{Orientation, Sign};

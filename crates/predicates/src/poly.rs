@@ -7,28 +7,32 @@
 //! # The pipeline (Robust kernel)
 //! 1. Filter: evaluate in [`Bounded`] (rounded value + rigorous error bound). If the bound certifies
 //!    the sign, done. This settles almost every call on non-degenerate input.
-//! 2. Expansions: rescale the inputs by one exact power of two so the largest magnitude lies in
+//! 2. Error-free `f64`: evaluate in [`ErrorFree`] (plain `f64`, each operation checked exact by an
+//!    error-free transformation). If nothing rounded, the value is exact and so is its sign. This settles
+//!    the degenerate calls on coarse (integer or dyadic) inputs, where exact zeros and ties are common.
+//! 3. Expansions: rescale the inputs by one exact power of two so the largest magnitude lies in
 //!    `[1/2, 1)`, then evaluate exactly in [`Expansion`] arithmetic. A homogeneous polynomial of degree
 //!    `D` only changes by the positive factor `2^(kD)`, so the sign is unchanged. Expansion arithmetic
 //!    is exact when no product underflows, which the dynamic-range test below guarantees.
-//! 3. Integers: if the inputs' dynamic range is too wide for step 2, every input is an integer multiple
+//! 4. Integers: if the inputs' dynamic range is too wide for step 3, every input is an integer multiple
 //!    of `2^e_min`; scale them to integers and evaluate in [`BigInt`]. Exact for every finite input.
 //!
-//! The Exact kernel runs steps 2–3 only; the Fast kernel evaluates in `f64` and takes the sign.
+//! The Exact kernel runs steps 3–4 only (it is the reference the others are tested against); the Fast
+//! kernel evaluates in `f64` and takes the sign.
 //!
 //! # Degree and range
 //! [`MAX_DEGREE`] = 16 bounds the degree accepted by [`Polynomial::DEGREE`]'s documentation contract;
-//! the pipeline is exact for any degree, but step 2 is only taken when
+//! the pipeline is exact for any degree, but step 3 is only taken when
 //! `D · (e_min − 52) ≥ −1064`, where `e_min` is the binary exponent of the smallest nonzero scaled input:
 //! then every exact intermediate is an integer multiple of `2^−1064`, so no Two-Product loses a bit.
-//! For `D = 6` that admits a dynamic range of `2^125` within one query; wider ranges use step 3.
+//! For `D = 6` that admits a dynamic range of `2^125` within one query; wider ranges use step 4.
 
 use num_bigint::BigInt;
 
 use crate::Sign;
 use crate::dd::DoubleDouble;
 use crate::expansion::Expansion;
-use crate::ring::{Bounded, Ring};
+use crate::ring::{Bounded, ErrorFree, Ring};
 
 /// The largest degree a [`Polynomial`] is documented to have (the pipeline stays exact beyond it, but
 /// the filter and the expansion stage were sized for it).
@@ -73,11 +77,25 @@ pub(crate) fn sign_fast<const N: usize, P: Polynomial<N> + ?Sized>(p: &P, x: &[f
     Sign::of_f64(p.eval(x))
 }
 
-/// Robust: the [`Bounded`] filter, then the exact stages.
+/// Robust: the [`Bounded`] filter, then [`sign_adaptive`].
 #[inline]
 pub(crate) fn sign_robust<const N: usize, P: Polynomial<N> + ?Sized>(p: &P, x: &[f64; N]) -> Sign {
     let b: [Bounded; N] = x.map(Bounded::input);
     match p.eval(&b).certain_sign() {
+        Some(s) => s,
+        None => sign_adaptive(p, x),
+    }
+}
+
+/// The Robust kernel's stages after its filter: the [`ErrorFree`] evaluation (plain `f64`, each
+/// operation checked exact), then [`sign_exact`] when some operation rounded.
+#[inline(never)]
+pub(crate) fn sign_adaptive<const N: usize, P: Polynomial<N> + ?Sized>(
+    p: &P,
+    x: &[f64; N],
+) -> Sign {
+    let v: [ErrorFree; N] = x.map(ErrorFree::input);
+    match p.eval(&v).exact_sign() {
         Some(s) => s,
         None => sign_exact(p, x),
     }

@@ -1,17 +1,18 @@
 //! The number types a predicate's polynomial is evaluated in: one definition, four arithmetics.
 //!
 //! A predicate is written once, generic over [`Ring`]; the kernels evaluate it in plain `f64` (Fast),
-//! in [`Bounded`] (the Robust kernel's filter), in [`Expansion`] (exact, floating-point expansions) and
-//! in [`BigInt`] (exact, for inputs whose dynamic range is too wide for expansions).
+//! in [`Bounded`] (the Robust kernel's filter), in [`ErrorFree`] (the Robust kernel's second stage: plain
+//! `f64`, each operation checked exact), in [`Expansion`] (exact, floating-point expansions) and in
+//! [`BigInt`] (exact, for inputs whose dynamic range is too wide for expansions).
 
 use num_bigint::BigInt;
 
-use crate::expansion::Expansion;
+use crate::expansion::{Expansion, two_product, two_sum};
 
 /// A commutative ring the kernels can evaluate a polynomial in.
 ///
-/// Implementors: `f64` (rounded), [`Bounded`] (rounded with a rigorous error bound), [`Expansion`]
-/// and [`BigInt`] (exact).
+/// Implementors: `f64` (rounded), [`Bounded`] (rounded with a rigorous error bound), [`ErrorFree`]
+/// (rounded, with a proof of exactness when no operation rounded), [`Expansion`] and [`BigInt`] (exact).
 pub trait Ring: Clone {
     /// The value of the input coordinate `x` (exact for every implementor but `f64` and `Bounded`,
     /// where it is exact too: an input is representable by definition).
@@ -133,6 +134,94 @@ impl Ring for Bounded {
         Bounded {
             value: -self.value,
             err: self.err,
+        }
+    }
+}
+
+/// A plain `f64` evaluation that knows whether it is exact: `exact` holds only when every operation
+/// that produced `value` was performed without rounding, so `value` *is* the exact value.
+///
+/// The Robust kernel's second stage, between the filter and the expansions. It decides the degenerate
+/// calls the filter cannot (an exact zero, or an exact tie between two distances) at nearly the cost of
+/// `f64` whenever the inputs are coarse enough that the arithmetic happens to be exact: integer or dyadic
+/// coordinates of moderate size, as in grids, snapped data, CAD models and every tie in our benchmarks.
+/// Each operation checks its own rounding with an error-free transformation (Shewchuk 1997):
+///
+/// - `a ± b`: Two-Sum gives the rounding error `e` exactly (for every finite operand, subnormal ones
+///   included); the result is exact iff `e = 0` and the sum is finite.
+/// - `a · b`: Two-Product (Dekker's split) gives the error exactly when neither factor exceeds `2⁵⁰⁰` (the
+///   split cannot overflow) and `|a·b| ≥ 2⁻⁹⁰⁰` (no partial product underflows: every one is a multiple
+///   of `ulp(a)·ulp(b) ≥ 2⁻¹⁰⁰⁶`); outside that range the product counts as inexact. A zero product is
+///   exact iff a factor is zero (otherwise it underflowed).
+///
+/// An inexact result only sends the call on to the exact stages; it is never wrong.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ErrorFree {
+    /// The rounded value (the exact value when `exact`).
+    pub value: f64,
+    /// `true` when no operation rounded.
+    pub exact: bool,
+}
+
+impl ErrorFree {
+    /// The exact sign when the evaluation was exact, else `None`.
+    #[inline(always)]
+    #[must_use]
+    pub fn exact_sign(self) -> Option<crate::Sign> {
+        if self.exact {
+            Some(crate::Sign::of_f64(self.value))
+        } else {
+            None
+        }
+    }
+}
+
+/// `2⁵⁰⁰`: the largest factor [`ErrorFree`] multiplies with a checked Two-Product.
+const EF_HUGE: f64 = f64::from_bits((1023 + 500) << 52);
+/// `2⁻⁹⁰⁰`: the smallest nonzero product [`ErrorFree`] checks.
+const EF_TINY: f64 = f64::from_bits((1023 - 900) << 52);
+
+impl Ring for ErrorFree {
+    #[inline(always)]
+    fn input(x: f64) -> Self {
+        ErrorFree {
+            value: x,
+            exact: x.is_finite(),
+        }
+    }
+    #[inline(always)]
+    fn add(&self, rhs: &Self) -> Self {
+        let (s, e) = two_sum(self.value, rhs.value);
+        ErrorFree {
+            value: s,
+            exact: self.exact & rhs.exact & (e == 0.0) & s.is_finite(),
+        }
+    }
+    #[inline(always)]
+    fn sub(&self, rhs: &Self) -> Self {
+        self.add(&rhs.neg())
+    }
+    #[inline(always)]
+    fn mul(&self, rhs: &Self) -> Self {
+        let (a, b) = (self.value, rhs.value);
+        let p = a * b;
+        let exact = if p == 0.0 {
+            a == 0.0 || b == 0.0
+        } else if a.abs() <= EF_HUGE && b.abs() <= EF_HUGE && p.abs() >= EF_TINY {
+            two_product(a, b).1 == 0.0
+        } else {
+            false
+        };
+        ErrorFree {
+            value: p,
+            exact: self.exact & rhs.exact & exact,
+        }
+    }
+    #[inline(always)]
+    fn neg(&self) -> Self {
+        ErrorFree {
+            value: -self.value,
+            exact: self.exact,
         }
     }
 }
