@@ -29,7 +29,8 @@
 //! - `geo`: geo's `Euclidean.distance(&Polygon, &Polygon)` (up to 4,096: it takes seconds beyond).
 //!
 //! Before timing, every peer's distance is checked against polydist's (relative 1e-9). Run:
-//! `cargo bench -p polydist-benches --bench separation_polygons`. Figures only.
+//! `cargo bench -p polydist-benches --bench separation_polygons`; with `POLYDIST_BENCH_ONLY=sawteeth`
+//! (any part of a group name) only that family is set up and timed. Figures only.
 
 use std::f64::consts::TAU;
 use std::hint::black_box;
@@ -198,6 +199,11 @@ fn query<K: Kernel>(p: &SimplePolygon, q: &SimplePolygon) -> f64 {
 }
 
 fn run(c: &mut Criterion, name: &str, make: fn(usize) -> (Vec<DVec2>, Vec<DVec2>), max_n: usize) {
+    // The set-up (inputs, and the brute force, geo and parry checked against us) costs minutes in all:
+    // `POLYDIST_BENCH_ONLY=<part of a group name>` skips the other families entirely.
+    if std::env::var("POLYDIST_BENCH_ONLY").is_ok_and(|only| !name.contains(only.as_str())) {
+        return;
+    }
     let mut group = c.benchmark_group(name);
     configure(&mut group);
     for n in SIZES.into_iter().filter(|&n| n <= max_n) {

@@ -240,25 +240,40 @@ impl Triangulation {
             return Err(bad(0, "wrong number of triangles"));
         }
         let mut neighbors = vec![[Neighbor::RingEdge(0); 3]; triangles.len()];
-        let mut open: HashMap<(u32, u32), (u32, u8)> = HashMap::with_capacity(n);
         let mut vertex_triangle = vec![u32::MAX; n];
+        // Every diagonal is the side of exactly two triangles, once in each direction: sort the
+        // non-ring sides by their unordered ends (one sort of 2(n − 3) keys, no hashing) and pair them.
+        // A side's key is (min << 32 | max); its direction bit says whether it runs min → max.
+        let mut sides: Vec<(u64, u32, u8)> = Vec::with_capacity(2 * n);
         for (t, tri) in triangles.iter().enumerate() {
             let t = t as u32;
             for k in 0..3 {
                 let (u, w) = (tri[k], tri[(k + 1) % 3]);
+                if u as usize >= n || w as usize >= n {
+                    return Err(bad(u, "a corner is not a ring vertex"));
+                }
                 vertex_triangle[u as usize] = t;
                 if (u as usize + 1) % n == w as usize {
                     neighbors[t as usize][k] = Neighbor::RingEdge(u);
-                } else if let Some((t2, k2)) = open.remove(&(w, u)) {
-                    neighbors[t as usize][k] = Neighbor::Triangle(t2);
-                    neighbors[t2 as usize][k2 as usize] = Neighbor::Triangle(t);
-                } else if open.insert((u, w), (t, k as u8)).is_some() {
-                    return Err(bad(u, "a side appears twice"));
+                } else {
+                    let key = (u64::from(u.min(w)) << 32) | u64::from(u.max(w));
+                    sides.push((key, t, ((k as u8) << 1) | u8::from(u < w)));
                 }
             }
         }
-        if let Some((&(u, _), _)) = open.iter().next() {
-            return Err(bad(u, "a diagonal has no twin"));
+        sides.sort_unstable_by_key(|s| s.0);
+        let mut i = 0;
+        while i < sides.len() {
+            let (key, t, kd) = sides[i];
+            let Some(&(_, t2, kd2)) = sides.get(i + 1).filter(|s| s.0 == key) else {
+                return Err(bad((key >> 32) as u32, "a diagonal has no twin"));
+            };
+            if kd & 1 == kd2 & 1 || sides.get(i + 2).is_some_and(|s| s.0 == key) {
+                return Err(bad((key >> 32) as u32, "a side appears twice"));
+            }
+            neighbors[t as usize][usize::from(kd >> 1)] = Neighbor::Triangle(t2);
+            neighbors[t2 as usize][usize::from(kd2 >> 1)] = Neighbor::Triangle(t);
+            i += 2;
         }
         if let Some(v) = vertex_triangle.iter().position(|&t| t == u32::MAX) {
             return Err(bad(v as u32, "a vertex is in no triangle"));
@@ -498,13 +513,37 @@ fn pieces<K: Kernel>(
 ) -> Result<Vec<Vec<usize>>, TriangulationError> {
     let n = ring.len();
     let bad = |index: usize, what| TriangulationError::Inconsistent { index, what };
-    // Outgoing sides per vertex: slot 0 is the ring edge to v + 1, then the diagonals by angle.
-    let mut out: Vec<Vec<usize>> = (0..n).map(|v| vec![(v + 1) % n]).collect();
+    // Outgoing sides per vertex, in one flat array (vertex v owns out[offsets[v]..offsets[v + 1]]):
+    // slot 0 is the ring edge to v + 1, then the diagonals by angle.
+    let mut offsets = vec![1usize; n + 1];
     for &(a, b) in diagonals {
-        out[a].push(b);
-        out[b].push(a);
+        if a >= n || b >= n {
+            return Err(bad(a.min(b), "a diagonal end is not a ring vertex"));
+        }
+        offsets[a] += 1;
+        offsets[b] += 1;
     }
-    for (v, list) in out.iter_mut().enumerate() {
+    let mut acc = 0;
+    for o in &mut offsets {
+        let len = *o;
+        *o = acc;
+        acc += len;
+    }
+    let total = offsets[n];
+    let mut out = vec![usize::MAX; total];
+    let mut fill: Vec<usize> = offsets[..n].iter().map(|&o| o + 1).collect();
+    for v in 0..n {
+        out[offsets[v]] = (v + 1) % n;
+    }
+    for &(a, b) in diagonals {
+        out[fill[a]] = b;
+        fill[a] += 1;
+        out[fill[b]] = a;
+        fill[b] += 1;
+    }
+    let mut keys: Vec<(u8, usize)> = Vec::new();
+    for v in 0..n {
+        let list = &mut out[offsets[v]..offsets[v + 1]];
         if list.len() <= 2 {
             if list.len() == 2 && half::<K>(ring[v], ring[list[0]], ring[list[1]]).is_none() {
                 return Err(bad(v, "a diagonal runs along an edge"));
@@ -513,7 +552,7 @@ fn pieces<K: Kernel>(
         }
         // Insertion sort (a handful of diagonals): never panics on an inconsistent comparator.
         let (pv, q) = (ring[v], ring[list[0]]);
-        let mut keys: Vec<(u8, usize)> = Vec::with_capacity(list.len() - 1);
+        keys.clear();
         for &x in &list[1..] {
             let h =
                 half::<K>(pv, q, ring[x]).ok_or_else(|| bad(v, "a diagonal runs along an edge"))?;
@@ -545,17 +584,11 @@ fn pieces<K: Kernel>(
             *slot = x;
         }
     }
-    let offsets: Vec<usize> = core::iter::once(0)
-        .chain(out.iter().scan(0, |acc, l| {
-            *acc += l.len();
-            Some(*acc)
-        }))
-        .collect();
-    let total = offsets[n];
+    let sides = |v: usize| &out[offsets[v]..offsets[v + 1]];
     let mut used = vec![false; total];
     let mut faces = Vec::new();
     for start_v in 0..n {
-        for start_slot in 0..out[start_v].len() {
+        for start_slot in 0..sides(start_v).len() {
             if used[offsets[start_v] + start_slot] {
                 continue;
             }
@@ -574,12 +607,12 @@ fn pieces<K: Kernel>(
                 if face.len() > n {
                     return Err(bad(v, "a face is longer than the ring"));
                 }
-                let w = out[v][slot];
+                let w = out[id];
                 // Coming into w from v: take the side just clockwise of w → v.
                 slot = if (w + n - 1) % n == v {
-                    out[w].len() - 1
+                    sides(w).len() - 1
                 } else {
-                    match out[w].iter().position(|&x| x == v) {
+                    match sides(w).iter().position(|&x| x == v) {
                         Some(pos) if pos >= 1 => pos - 1,
                         _ => return Err(bad(w, "a diagonal is missing its twin")),
                     }
@@ -788,4 +821,46 @@ pub fn triangulate_brute<K: Kernel>(ring: &[DVec2]) -> Result<Triangulation, Tri
     }
     triangles.push([rest[0] as u32, rest[1] as u32, rest[2] as u32]);
     Triangulation::glue(n, triangles)
+}
+
+#[cfg(test)]
+mod tests {
+    //! `glue`'s pairing of diagonals, on hand-made triangle lists (the rest of this module is tested
+    //! through `tests/geodesic.rs`).
+    use super::*;
+
+    #[test]
+    fn glue_pairs_each_diagonal_with_its_twin() {
+        // A hexagon fanned from vertex 0: diagonals 0–2, 0–3, 0–4.
+        let t = Triangulation::glue(6, vec![[0, 1, 2], [0, 2, 3], [0, 3, 4], [0, 4, 5]])
+            .expect("a fan");
+        assert_eq!(
+            t.neighbors()[1],
+            [
+                Neighbor::Triangle(0),
+                Neighbor::RingEdge(2),
+                Neighbor::Triangle(2)
+            ]
+        );
+        assert_eq!(t.neighbors()[0][2], Neighbor::Triangle(1));
+        assert_eq!(t.neighbors()[3][0], Neighbor::Triangle(2));
+        assert_eq!(t.neighbors()[3][2], Neighbor::RingEdge(5));
+    }
+
+    #[test]
+    fn glue_rejects_inconsistent_triangle_lists() {
+        let err = |tris: Vec<[u32; 3]>, n| match Triangulation::glue(n, tris) {
+            Err(TriangulationError::Inconsistent { what, .. }) => what,
+            other => panic!("expected an inconsistency, got {other:?}"),
+        };
+        // Diagonals 0–2 and 1–3, each on one side only.
+        assert_eq!(err(vec![[0, 1, 2], [0, 1, 3]], 4), "a diagonal has no twin");
+        // The same diagonal twice in one direction.
+        assert_eq!(err(vec![[0, 1, 2], [2, 0, 1]], 4), "a side appears twice");
+        assert_eq!(err(vec![[0, 1, 2]], 4), "wrong number of triangles");
+        assert_eq!(
+            err(vec![[0, 1, 9], [0, 2, 3]], 4),
+            "a corner is not a ring vertex"
+        );
+    }
 }
