@@ -1,10 +1,12 @@
-//! Brute-force twins: test references and benchmark baselines, never the main path.
+//! Brute-force twins: test references and benchmark baselines, never the main path; and the
+//! candidate scans the separator runs on its small subproblems ([`scan`] and [`scan_pruned`] with
+//! `interior_only`), which add an exact pre-filter ([`bounds`]) to the same answer.
 
 use core::cmp::Ordering;
 
 use glam::DVec2;
 use polydist_polygon::Feature;
-use polydist_predicates::{Dist2, Kernel, Sign, is_valid_coordinate};
+use polydist_predicates::{Bounded, Dist2, Kernel, Ring, Sign, is_valid_coordinate};
 
 use crate::chain::validate;
 use crate::construct::{vertex_edge, vertex_vertex};
@@ -144,28 +146,66 @@ impl Cand {
 
     /// The pair, with its distance and nearest points constructed once.
     fn pair(self, p: &[DVec2], q: &[DVec2]) -> ClosestPair {
-        match self {
-            Cand::Vv(i, j) => vertex_vertex(p[i], q[j], Feature::Vertex(i), Feature::Vertex(j)),
-            Cand::PvQe(i, j) => {
-                let (squared, distance, foot) = vertex_edge(p[i], q[j], q[j + 1]);
+        self.winner(p, q).pair()
+    }
+
+    /// The candidate with the points that realize it copied out of the chains.
+    fn winner(self, p: &[DVec2], q: &[DVec2]) -> Winner {
+        let pts = match self {
+            Cand::Vv(i, j) => [p[i], q[j], q[j]],
+            Cand::PvQe(i, j) => [p[i], q[j], q[j + 1]],
+            Cand::QvPe(j, i) => [q[j], p[i], p[i + 1]],
+        };
+        Winner { cand: self, pts }
+    }
+}
+
+/// A scan's winner: the candidate and its points in chain order (a vertex, then the other vertex
+/// or the edge's two ends), so that its pair can be constructed later, exactly as the scan would,
+/// after the chains themselves are gone. The separator keeps one per subproblem and constructs the
+/// pair of the overall winner only.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Winner {
+    cand: Cand,
+    pts: [DVec2; 3],
+}
+
+impl Winner {
+    /// The chain-local features: `P`'s, then `Q`'s.
+    pub(crate) fn features(&self) -> (Feature, Feature) {
+        match self.cand {
+            Cand::Vv(i, j) => (Feature::Vertex(i), Feature::Vertex(j)),
+            Cand::PvQe(i, j) => (Feature::Vertex(i), Feature::Edge(j)),
+            Cand::QvPe(j, i) => (Feature::Edge(i), Feature::Vertex(j)),
+        }
+    }
+
+    /// The pair with chain-local features, its distance and nearest points constructed.
+    pub(crate) fn pair(&self) -> ClosestPair {
+        let [x, a, b] = self.pts;
+        let (feature_p, feature_q) = self.features();
+        match self.cand {
+            Cand::Vv(..) => vertex_vertex(x, a, feature_p, feature_q),
+            Cand::PvQe(..) => {
+                let (squared, distance, foot) = vertex_edge(x, a, b);
                 ClosestPair {
                     distance,
                     squared_distance: squared,
-                    point_p: p[i],
+                    point_p: x,
                     point_q: foot,
-                    feature_p: Feature::Vertex(i),
-                    feature_q: Feature::Edge(j),
+                    feature_p,
+                    feature_q,
                 }
             }
-            Cand::QvPe(j, i) => {
-                let (squared, distance, foot) = vertex_edge(q[j], p[i], p[i + 1]);
+            Cand::QvPe(..) => {
+                let (squared, distance, foot) = vertex_edge(x, a, b);
                 ClosestPair {
                     distance,
                     squared_distance: squared,
                     point_p: foot,
-                    point_q: q[j],
-                    feature_p: Feature::Edge(i),
-                    feature_q: Feature::Vertex(j),
+                    point_q: x,
+                    feature_p,
+                    feature_q,
                 }
             }
         }
@@ -187,18 +227,118 @@ fn admitted<K: Kernel>(c: Cand, p: &[DVec2], q: &[DVec2], interior_only: bool) -
         }
 }
 
+/// `2⁻⁹⁰⁰`: below it [`bounds`] gives up (no underflow reasoning near the subnormal range).
+const BOUNDS_TINY: f64 = f64::from_bits((1023 - 900) << 52);
+/// `4u`, the slack for the at most three roundings of a bound's final arithmetic.
+const BOUNDS_SLACK: f64 = 4.0 / 9_007_199_254_740_992.0;
+
+/// Rigorous bounds `lo ≤ D ≤ hi` on a candidate's exact squared distance `D`, from one [`Bounded`]
+/// evaluation (a rounded value with a proved error bound; no decision is taken on a rounded value).
+///
+/// For a vertex–edge candidate the bounds are those of the distance to the edge's *line*, which is
+/// never larger than the distance to the segment (so `lo` bounds every candidate) and equals it when
+/// the foot is strictly inside the edge (so `hi` bounds the admitted candidates of an
+/// `interior_only` scan, the only ones that can become the best).
+///
+/// Why they hold: `Bounded` gives `v` and `e` with `|exact − v| ≤ e` and `e ≥ u|v|`, so
+/// `fl(v − 2e) ≤ v − e` and `fl(v + 2e) ≥ v + e` (one rounding costs at most `u|v| ≤ e`). The quotient
+/// `a²/l` of the bounded numerator and denominator then takes at most three more roundings, covered by
+/// the factor `1 ∓ 4u`. Values below `2⁻⁹⁰⁰` or not finite give `(0, ∞)`: nothing is pruned there.
+fn bounds(c: Cand, p: &[DVec2], q: &[DVec2]) -> (f64, f64) {
+    let give_up = (0.0, f64::INFINITY);
+    let b = |x: f64| Bounded::input(x);
+    let sq = |a: DVec2, v: DVec2| {
+        let (dx, dy) = (b(a.x).sub(&b(v.x)), b(a.y).sub(&b(v.y)));
+        dx.square().add(&dy.square())
+    };
+    let (v, a) = match c {
+        Cand::Vv(i, j) => {
+            let d = sq(p[i], q[j]);
+            let (lo, hi) = (d.value - (d.err + d.err), d.value + (d.err + d.err));
+            return if d.value.is_finite() && d.err.is_finite() && lo >= BOUNDS_TINY {
+                (lo, hi)
+            } else {
+                give_up
+            };
+        }
+        Cand::PvQe(i, j) => (p[i], (q[j], q[j + 1])),
+        Cand::QvPe(j, i) => (q[j], (p[i], p[i + 1])),
+    };
+    let (s, t) = a;
+    let (ex, ey) = (b(t.x).sub(&b(s.x)), b(t.y).sub(&b(s.y)));
+    let (wx, wy) = (b(v.x).sub(&b(s.x)), b(v.y).sub(&b(s.y)));
+    let cr = ex.mul(&wy).sub(&ey.mul(&wx));
+    let len = ex.square().add(&ey.square());
+    let c_abs = cr.value.abs();
+    let (c_lo, c_hi) = (c_abs - (cr.err + cr.err), c_abs + (cr.err + cr.err));
+    let (l_lo, l_hi) = (
+        len.value - (len.err + len.err),
+        len.value + (len.err + len.err),
+    );
+    let finite = [c_hi, l_hi, cr.err, len.err].iter().all(|x| x.is_finite());
+    if !finite || l_lo < BOUNDS_TINY {
+        return give_up;
+    }
+    let (hi_num, lo_num) = (c_hi * c_hi, c_lo.max(0.0) * c_lo.max(0.0));
+    if !hi_num.is_finite() {
+        // An overflowing square (coordinates near 2^500): no bound.
+        return give_up;
+    }
+    let hi = (hi_num / l_lo) * (1.0 + BOUNDS_SLACK);
+    if hi < BOUNDS_TINY {
+        // The quotient may have lost bits to underflow: no bound.
+        return give_up;
+    }
+    // A numerator or quotient below 2^-900 may have lost bits to underflow: the lower bound is 0.
+    let lo = if lo_num < BOUNDS_TINY {
+        0.0
+    } else {
+        (lo_num / l_hi) * (1.0 - BOUNDS_SLACK)
+    };
+    if lo < BOUNDS_TINY {
+        (0.0, hi)
+    } else {
+        (lo, hi)
+    }
+}
+
 /// The scan behind [`separation_brute`] on valid, non-empty chains: every vertex–vertex pair, then
 /// `P`-vertex against `Q`-edges, then `Q`-vertex against `P`-edges, ties to the first found (the
 /// least [`Cand`] in that order). With `interior_only`, vertex–edge pairs whose vertex does not
 /// project strictly inside the edge are skipped (same answer, fewer comparisons: Amato's separator
 /// scans its subproblems this way). `O(n_p · n_q)`.
 pub(crate) fn scan<K: Kernel>(p: &[DVec2], q: &[DVec2], interior_only: bool) -> ClosestPair {
+    scan_best::<K>(p, q, interior_only).pair(p, q)
+}
+
+/// [`scan`]'s winner, nothing constructed yet.
+pub(crate) fn scan_winner<K: Kernel>(p: &[DVec2], q: &[DVec2], interior_only: bool) -> Winner {
+    scan_best::<K>(p, q, interior_only).winner(p, q)
+}
+
+fn scan_best<K: Kernel>(p: &[DVec2], q: &[DVec2], interior_only: bool) -> Cand {
     let mut best = Cand::Vv(0, 0);
+    // With `interior_only`, a candidate whose distance is bounded strictly above the best's is
+    // skipped before any predicate: it cannot win, so the answer is unchanged.
+    let mut best_hi = if interior_only {
+        bounds(best, p, q).1
+    } else {
+        f64::INFINITY
+    };
     let mut consider = |c: Cand| {
+        let (lo, hi) = if interior_only {
+            bounds(c, p, q)
+        } else {
+            (0.0, f64::INFINITY)
+        };
+        if lo > best_hi {
+            return;
+        }
         if admitted::<K>(c, p, q, interior_only)
             && K::cmp_dist2(c.dist(p, q), best.dist(p, q)) == Ordering::Less
         {
             best = c;
+            best_hi = hi;
         }
     };
     for i in 0..p.len() {
@@ -218,7 +358,7 @@ pub(crate) fn scan<K: Kernel>(p: &[DVec2], q: &[DVec2], interior_only: bool) -> 
     }
     // A vertex–edge candidate whose nearest point is an endpoint is never strictly better than that
     // vertex–vertex pair, which was considered first: so the winner's foot is strictly inside.
-    best.pair(p, q)
+    best
 }
 
 /// A node of [`scan_pruned`]'s box hierarchy over a chain: it owns the vertices `s..e` and the
@@ -285,12 +425,37 @@ fn box_gap(a: &BoxNode, b: &BoxNode) -> Dist2 {
 /// the scan's, feature for feature. The traversal order (nearer boxes first, by an `f64` estimate)
 /// only affects speed. Worst case `O(n_p · n_q)` exact tests, like the scan; on subproblems whose
 /// chains are long and mostly far from each other, far fewer. `O(n_p + n_q)` extra space.
+#[cfg(test)]
 pub(crate) fn scan_pruned<K: Kernel>(p: &[DVec2], q: &[DVec2], interior_only: bool) -> ClosestPair {
+    scan_pruned_best::<K>(p, q, interior_only).pair(p, q)
+}
+
+/// [`scan_pruned`]'s winner, nothing constructed yet.
+pub(crate) fn scan_pruned_winner<K: Kernel>(
+    p: &[DVec2],
+    q: &[DVec2],
+    interior_only: bool,
+) -> Winner {
+    scan_pruned_best::<K>(p, q, interior_only).winner(p, q)
+}
+
+fn scan_pruned_best<K: Kernel>(p: &[DVec2], q: &[DVec2], interior_only: bool) -> Cand {
     let (bp, bq) = (boxes(p), boxes(q));
     let mut best = Cand::Vv(0, 0);
     let mut best_d = best.dist(p, q);
-    let consider = |c: Cand, best: &mut Cand, best_d: &mut Dist2| {
-        if !admitted::<K>(c, p, q, interior_only) {
+    // As in `scan`: with `interior_only`, candidates bounded strictly above the best are skipped.
+    let mut best_hi = if interior_only {
+        bounds(best, p, q).1
+    } else {
+        f64::INFINITY
+    };
+    let mut consider = |c: Cand, best: &mut Cand, best_d: &mut Dist2| {
+        let (lo, hi) = if interior_only {
+            bounds(c, p, q)
+        } else {
+            (0.0, f64::INFINITY)
+        };
+        if lo > best_hi || !admitted::<K>(c, p, q, interior_only) {
             return;
         }
         let d = c.dist(p, q);
@@ -298,10 +463,12 @@ pub(crate) fn scan_pruned<K: Kernel>(p: &[DVec2], q: &[DVec2], interior_only: bo
             Ordering::Less => {
                 *best = c;
                 *best_d = d;
+                best_hi = hi;
             }
             Ordering::Equal if c < *best => {
                 *best = c;
                 *best_d = d;
+                best_hi = hi;
             }
             _ => {}
         }
@@ -351,5 +518,108 @@ pub(crate) fn scan_pruned<K: Kernel>(p: &[DVec2], q: &[DVec2], interior_only: bo
         }
         stack.extend(next);
     }
-    best.pair(p, q)
+    best
+}
+
+#[cfg(test)]
+mod tests {
+    //! The pre-filter's bounds against exact rational distances, and the filtered scan against the
+    //! plain one.
+    use super::*;
+    use polydist_oracle::SplitMix64;
+    use polydist_predicates::exact::{
+        squared_distance_point_point, squared_distance_point_segment, to_rational,
+    };
+    use polydist_predicates::{Exact, Robust};
+
+    /// Points of one scale class: unit square, lattice (ties), huge, tiny, or far from the origin.
+    fn point(rng: &mut SplitMix64, class: usize) -> DVec2 {
+        let u = |rng: &mut SplitMix64| rng.unit_f64() - 0.5;
+        match class {
+            0 => DVec2::new(u(rng), u(rng)),
+            1 => DVec2::new(rng.range_i64(-4, 5) as f64, rng.range_i64(-4, 5) as f64) / 8.0,
+            2 => DVec2::new(u(rng), u(rng)) * 1e150,
+            3 => DVec2::new(u(rng), u(rng)) * 1e-280,
+            _ => DVec2::new(1e12 + u(rng), 1e12 + u(rng)),
+        }
+    }
+
+    #[test]
+    fn bounds_bracket_the_exact_squared_distance() {
+        let mut rng = SplitMix64::new(0xb0d5);
+        let (mut bracketed, mut near) = (0, 0);
+        for round in 0..24_000 {
+            let class = round % 6;
+            let p: Vec<DVec2> = (0..2).map(|_| point(&mut rng, class % 5)).collect();
+            let mut q: Vec<DVec2> = (0..2).map(|_| point(&mut rng, class % 5)).collect();
+            if class == 5 {
+                // Near incidence: q[0] rounded onto P's edge, where the error bounds are all there is.
+                q[0] = p[0] + (p[1] - p[0]) * rng.unit_f64();
+            }
+            for c in [Cand::Vv(0, 1), Cand::PvQe(1, 0), Cand::QvPe(0, 0)] {
+                // (QvPe(0, 0) is q[0] against P's edge: the near-incident candidate of class 5.)
+                let (lo, hi) = bounds(c, &p, &q);
+                assert!(lo <= hi, "{c:?} {p:?} {q:?}");
+                let (v, s, t) = match c {
+                    Cand::Vv(i, j) => (p[i], q[j], q[j]),
+                    Cand::PvQe(i, j) => (p[i], q[j], q[j + 1]),
+                    Cand::QvPe(j, i) => (q[j], p[i], p[i + 1]),
+                };
+                // The segment distance: `lo` bounds it always, `hi` when the foot is strictly inside.
+                let inside = s == t
+                    || (Exact::dot_sign(s, v, s, t) == Sign::Positive
+                        && Exact::dot_sign(t, v, t, s) == Sign::Positive);
+                let exact = if s == t {
+                    squared_distance_point_point(v, s)
+                } else {
+                    squared_distance_point_segment(v, s, t)
+                }
+                .expect("finite");
+                assert!(
+                    to_rational(lo).expect("finite") <= exact,
+                    "lo {c:?} {p:?} {q:?}"
+                );
+                if inside && hi.is_finite() {
+                    assert!(
+                        exact <= to_rational(hi).expect("finite"),
+                        "hi {c:?} {p:?} {q:?}"
+                    );
+                    bracketed += 1;
+                    near += usize::from(class == 5 && matches!(c, Cand::QvPe(..)));
+                }
+            }
+        }
+        assert!(bracketed > 20_000, "{bracketed}");
+        assert!(near > 1_000, "{near}");
+    }
+
+    #[test]
+    fn the_filtered_scan_is_the_plain_scan() {
+        // `interior_only` scans (filtered) against the unfiltered scan over every candidate: the same
+        // features, on random, lattice (exact ties) and far-away chains.
+        let mut rng = SplitMix64::new(0x5ca7);
+        for round in 0..3000 {
+            let class = [0, 1, 4][round % 3];
+            let n = 1 + rng.index(9);
+            let m = 1 + rng.index(9);
+            let p: Vec<DVec2> = (0..n).map(|_| point(&mut rng, class)).collect();
+            let q: Vec<DVec2> = (0..m)
+                .map(|_| point(&mut rng, class) + DVec2::new(0.75, 0.0))
+                .collect();
+            for (a, b) in [
+                (scan::<Robust>(&p, &q, true), scan::<Robust>(&p, &q, false)),
+                (scan::<Exact>(&p, &q, true), scan::<Exact>(&p, &q, false)),
+                (
+                    scan_pruned::<Robust>(&p, &q, true),
+                    scan::<Robust>(&p, &q, false),
+                ),
+            ] {
+                assert_eq!(
+                    (a.feature_p, a.feature_q),
+                    (b.feature_p, b.feature_q),
+                    "{p:?} {q:?}"
+                );
+            }
+        }
+    }
 }

@@ -29,7 +29,7 @@ use polydist_polygon::{Feature, SimplePolygon, convex_hull_with};
 
 #[cfg(test)]
 use crate::brute::separation_brute;
-use crate::brute::{scan, scan_pruned};
+use crate::brute::{Winner, scan_pruned_winner, scan_winner};
 use crate::error::SeparationError;
 use crate::geodesic::{Hit, first_hit, merge_collinear, shortest_path};
 use crate::param::{Affine, Edge, Param};
@@ -998,9 +998,9 @@ pub(crate) fn build_region<K: Kernel>(region: Region) -> Result<Built, Separatio
 }
 
 /// A candidate pair in internal features of `P` and `Q`.
-fn dist_of(p: &[DVec2], q: &[DVec2], pair: &ClosestPair) -> Dist2 {
+fn dist_of(p: &[DVec2], q: &[DVec2], fp: Feature, fq: Feature) -> Dist2 {
     let (np, nq) = (p.len(), q.len());
-    match (pair.feature_p, pair.feature_q) {
+    match (fp, fq) {
         (Feature::Vertex(i), Feature::Vertex(j)) => Dist2::PointPoint(p[i % np], q[j % nq]),
         (Feature::Vertex(i), Feature::Edge(f)) => {
             Dist2::PointSegment(p[i % np], q[f % nq], q[(f + 1) % nq])
@@ -1030,11 +1030,19 @@ pub(crate) fn solve<K: Kernel>(
 ) -> Result<(ClosestPair, SeparationStats), SeparationError> {
     let (p, q) = if plan.swapped { (q, p) } else { (p, q) };
     let mut stats = SeparationStats::default();
-    let mut best: Option<(ClosestPair, Dist2)> = None;
+    let mut best: Option<(Found, Dist2)> = None;
     for b in &plan.passes {
         solve_pass::<K>(p, q, b, &mut stats, &mut best);
     }
-    let (pair, _) = best.ok_or(SeparationError::Inconsistent)?;
+    let (found, _) = best.ok_or(SeparationError::Inconsistent)?;
+    let pair = match found {
+        Found::Pair(pair) => pair,
+        Found::Scanned(w, feature_p, feature_q) => ClosestPair {
+            feature_p,
+            feature_q,
+            ..w.pair()
+        },
+    };
     let pair = if plan.swapped {
         ClosestPair {
             point_p: pair.point_q,
@@ -1049,13 +1057,20 @@ pub(crate) fn solve<K: Kernel>(
     Ok((pair, stats))
 }
 
+/// The best subproblem answer so far: a pair section 3 constructed, or a scan's winner (constructed
+/// once, for the final winner only) with its internal features.
+enum Found {
+    Pair(ClosestPair),
+    Scanned(Winner, Feature, Feature),
+}
+
 /// The subproblems of one pass, folded into `best`.
 fn solve_pass<K: Kernel>(
     p: &SimplePolygon,
     q: &SimplePolygon,
     b: &Built,
     stats: &mut SeparationStats,
-    best: &mut Option<(ClosestPair, Dist2)>,
+    best: &mut Option<(Found, Dist2)>,
 ) {
     let (vp, vq) = (p.vertices(), q.vertices());
     let r = &b.region;
@@ -1094,42 +1109,47 @@ fn solve_pass<K: Kernel>(
             } else {
                 separation_of_chains::<K>(&pcv, &qcv, a, c).ok()
             };
-            let pair = match section3 {
+            let (fp, fq, pair) = match section3 {
                 Some(sep) => {
                     stats.subproblems_section3 += 1;
-                    sep.pair
+                    (sep.pair.feature_p, sep.pair.feature_q, Ok(sep.pair))
                 }
                 None => {
                     stats.subproblems_scanned += 1;
                     // Large subproblems (the containing case's few long subchains): the same scan,
                     // pruned exactly by bounding boxes.
-                    if pcv.len() * qcv.len() > 256 {
-                        scan_pruned::<K>(&pcv, &qcv, true)
+                    let w = if pcv.len() * qcv.len() > 256 {
+                        scan_pruned_winner::<K>(&pcv, &qcv, true)
                     } else {
-                        scan::<K>(&pcv, &qcv, true)
-                    }
+                        scan_winner::<K>(&pcv, &qcv, true)
+                    };
+                    let (fp, fq) = w.features();
+                    (fp, fq, Err(w))
                 }
             };
             // Chain features to internal features.
-            let fp = match pair.feature_p {
+            let fp = match fp {
                 Feature::Vertex(k) => Feature::Vertex((r.pb + plo + k) % r.np),
                 Feature::Edge(k) => Feature::Edge((r.pb + plo + k) % r.np),
             };
-            let fq = match pair.feature_q {
+            let fq = match fq {
                 Feature::Vertex(k) => Feature::Vertex(r.src[qlo + k]),
                 Feature::Edge(k) => Feature::Edge(r.src[qlo + k + 1]),
             };
-            let pair = ClosestPair {
-                feature_p: fp,
-                feature_q: fq,
-                ..pair
+            let found = match pair {
+                Ok(pair) => Found::Pair(ClosestPair {
+                    feature_p: fp,
+                    feature_q: fq,
+                    ..pair
+                }),
+                Err(w) => Found::Scanned(w, fp, fq),
             };
-            let d = dist_of(vp, vq, &pair);
+            let d = dist_of(vp, vq, fp, fq);
             if best
                 .as_ref()
                 .is_none_or(|(_, bd)| K::cmp_dist2(d, *bd) == Ordering::Less)
             {
-                *best = Some((pair, d));
+                *best = Some((found, d));
             }
         }
     }
@@ -1142,6 +1162,7 @@ mod tests {
     //! brute force, on hull-meeting pairs of every generator family.
 
     use super::*;
+    use crate::brute::{scan, scan_pruned};
     use crate::polygon::closed_chain;
     use polydist_oracle::SplitMix64;
     use polydist_polygon::predicates::{Exact, Fast, Robust};
@@ -1462,8 +1483,8 @@ mod tests {
         let (cp, cq) = (closed_chain(p), closed_chain(q));
         let brute = separation_brute::<K>(&cp, &cq).map_err(|e| format!("{e}"))?;
         let (vp, vq) = (p.vertices(), q.vertices());
-        let d = dist_of(vp, vq, &pair);
-        let bd = dist_of(vp, vq, &brute);
+        let d = dist_of(vp, vq, pair.feature_p, pair.feature_q);
+        let bd = dist_of(vp, vq, brute.feature_p, brute.feature_q);
         if K::cmp_dist2(d, bd) != Ordering::Equal {
             return Err(format!(
                 "σ differs: {pair:?} against the brute force {brute:?}"
