@@ -6,7 +6,7 @@ use core::cmp::Ordering;
 
 use glam::DVec2;
 use polydist_polygon::Feature;
-use polydist_predicates::{Bounded, Dist2, Kernel, Ring, Sign, is_valid_coordinate};
+use polydist_predicates::{Dist2, Kernel, Sign, is_valid_coordinate};
 
 use crate::chain::validate;
 use crate::construct::{vertex_edge, vertex_vertex};
@@ -229,54 +229,61 @@ fn admitted<K: Kernel>(c: Cand, p: &[DVec2], q: &[DVec2], interior_only: bool) -
 
 /// `2⁻⁹⁰⁰`: below it [`bounds`] gives up (no underflow reasoning near the subnormal range).
 const BOUNDS_TINY: f64 = f64::from_bits((1023 - 900) << 52);
+/// Unit roundoff `u = 2⁻⁵³`.
+const BOUNDS_U: f64 = 1.0 / 9_007_199_254_740_992.0;
+/// `4u + 64u²`: the relative error of a sum of two squares of rounded differences, and of a
+/// difference of two products of rounded differences relative to the sum of the products' magnitudes
+/// (the Robust kernel's static filter constants; derivation in `docs/ROBUSTNESS.md`).
+const BOUNDS_ERR: f64 = 4.0 * BOUNDS_U + 64.0 * BOUNDS_U * BOUNDS_U;
 /// `4u`, the slack for the at most three roundings of a bound's final arithmetic.
-const BOUNDS_SLACK: f64 = 4.0 / 9_007_199_254_740_992.0;
+const BOUNDS_SLACK: f64 = 4.0 * BOUNDS_U;
 
-/// Rigorous bounds `lo ≤ D ≤ hi` on a candidate's exact squared distance `D`, from one [`Bounded`]
-/// evaluation (a rounded value with a proved error bound; no decision is taken on a rounded value).
+/// Rigorous bounds `lo ≤ D ≤ hi` on a candidate's exact squared distance `D`, from plain `f64`
+/// arithmetic and a static error bound (no decision is taken on a rounded value: the bounds only let
+/// a scan skip a candidate that certainly loses, or take one that certainly wins).
 ///
 /// For a vertex–edge candidate the bounds are those of the distance to the edge's *line*, which is
 /// never larger than the distance to the segment (so `lo` bounds every candidate) and equals it when
 /// the foot is strictly inside the edge (so `hi` bounds the admitted candidates of an
 /// `interior_only` scan, the only ones that can become the best).
 ///
-/// Why they hold: `Bounded` gives `v` and `e` with `|exact − v| ≤ e` and `e ≥ u|v|`, so
-/// `fl(v − 2e) ≤ v − e` and `fl(v + 2e) ≥ v + e` (one rounding costs at most `u|v| ≤ e`). The quotient
-/// `a²/l` of the bounded numerator and denominator then takes at most three more roundings, covered by
-/// the factor `1 ∓ 4u`. Values below `2⁻⁹⁰⁰` or not finite give `(0, ∞)`: nothing is pruned there.
+/// Why they hold. A sum of two squares of rounded differences `ŝ` is within `(4u + 20u²)ŝ` of the
+/// exact value, and a difference of two products of rounded differences `ĉ = t̂₁ − t̂₂` within
+/// `(4u + 12u²)(|t̂₁| + |t̂₂|)` (`docs/ROBUSTNESS.md`, the static filters); the computed error `e`, with
+/// the constant `4u + 64u²`, is at least that after its own two roundings, and at least `u|v|` for
+/// the value `v` it bounds. So `fl(v − 2e) ≤ v − e` and `fl(v + 2e) ≥ v + e` (one rounding costs at
+/// most `u|v| ≤ e`). The quotient `a²/l` of the bounded numerator and denominator takes at most three
+/// more roundings, covered by the factor `1 ∓ 4u`. Underflow: every quantity is at least `2⁻⁹⁰⁰` or
+/// the bound gives up (`lo = 0`, or `(0, ∞)`), so an underflowed product (at most `2⁻¹⁰⁷⁴` off) is
+/// inside the `64u²` slack. Non-finite values give `(0, ∞)`.
 fn bounds(c: Cand, p: &[DVec2], q: &[DVec2]) -> (f64, f64) {
     let give_up = (0.0, f64::INFINITY);
-    let b = |x: f64| Bounded::input(x);
-    let sq = |a: DVec2, v: DVec2| {
-        let (dx, dy) = (b(a.x).sub(&b(v.x)), b(a.y).sub(&b(v.y)));
-        dx.square().add(&dy.square())
-    };
-    let (v, a) = match c {
+    let (v, s, t) = match c {
         Cand::Vv(i, j) => {
-            let d = sq(p[i], q[j]);
-            let (lo, hi) = (d.value - (d.err + d.err), d.value + (d.err + d.err));
-            return if d.value.is_finite() && d.err.is_finite() && lo >= BOUNDS_TINY {
+            let d = p[i] - q[j];
+            let sq = d.x * d.x + d.y * d.y;
+            let e = BOUNDS_ERR * sq;
+            let (lo, hi) = (sq - (e + e), sq + (e + e));
+            return if sq.is_finite() && lo >= BOUNDS_TINY {
                 (lo, hi)
             } else {
                 give_up
             };
         }
-        Cand::PvQe(i, j) => (p[i], (q[j], q[j + 1])),
-        Cand::QvPe(j, i) => (q[j], (p[i], p[i + 1])),
+        Cand::PvQe(i, j) => (p[i], q[j], q[j + 1]),
+        Cand::QvPe(j, i) => (q[j], p[i], p[i + 1]),
     };
-    let (s, t) = a;
-    let (ex, ey) = (b(t.x).sub(&b(s.x)), b(t.y).sub(&b(s.y)));
-    let (wx, wy) = (b(v.x).sub(&b(s.x)), b(v.y).sub(&b(s.y)));
-    let cr = ex.mul(&wy).sub(&ey.mul(&wx));
-    let len = ex.square().add(&ey.square());
-    let c_abs = cr.value.abs();
-    let (c_lo, c_hi) = (c_abs - (cr.err + cr.err), c_abs + (cr.err + cr.err));
-    let (l_lo, l_hi) = (
-        len.value - (len.err + len.err),
-        len.value + (len.err + len.err),
-    );
-    let finite = [c_hi, l_hi, cr.err, len.err].iter().all(|x| x.is_finite());
-    if !finite || l_lo < BOUNDS_TINY {
+    let (e, w) = (t - s, v - s);
+    let (t1, t2) = (e.x * w.y, e.y * w.x);
+    let cr = t1 - t2;
+    let cr_err = BOUNDS_ERR * (t1.abs() + t2.abs());
+    let len = e.x * e.x + e.y * e.y;
+    let len_err = BOUNDS_ERR * len;
+    let c_abs = cr.abs();
+    let (c_lo, c_hi) = (c_abs - (cr_err + cr_err), c_abs + (cr_err + cr_err));
+    let (l_lo, l_hi) = (len - (len_err + len_err), len + (len_err + len_err));
+    if !(c_hi.is_finite() && l_hi.is_finite()) || l_lo < BOUNDS_TINY || cr_err < BOUNDS_TINY {
+        // Overflow, a tiny edge, or products small enough to have underflowed: no bound.
         return give_up;
     }
     let (hi_num, lo_num) = (c_hi * c_hi, c_lo.max(0.0) * c_lo.max(0.0));
@@ -320,25 +327,25 @@ fn scan_best<K: Kernel>(p: &[DVec2], q: &[DVec2], interior_only: bool) -> Cand {
     let mut best = Cand::Vv(0, 0);
     // With `interior_only`, a candidate whose distance is bounded strictly above the best's is
     // skipped before any predicate: it cannot win, so the answer is unchanged.
-    let mut best_hi = if interior_only {
-        bounds(best, p, q).1
+    // A candidate bounded strictly above the best cannot win, one bounded strictly below it wins:
+    // only overlapping bounds (near ties) need the exact comparison.
+    let mut best_b = if interior_only {
+        bounds(best, p, q)
     } else {
-        f64::INFINITY
+        (0.0, f64::INFINITY)
     };
     let mut consider = |c: Cand| {
-        let (lo, hi) = if interior_only {
+        let b = if interior_only {
             bounds(c, p, q)
         } else {
             (0.0, f64::INFINITY)
         };
-        if lo > best_hi {
+        if b.0 > best_b.1 || !admitted::<K>(c, p, q, interior_only) {
             return;
         }
-        if admitted::<K>(c, p, q, interior_only)
-            && K::cmp_dist2(c.dist(p, q), best.dist(p, q)) == Ordering::Less
-        {
+        if b.1 < best_b.0 || K::cmp_dist2(c.dist(p, q), best.dist(p, q)) == Ordering::Less {
             best = c;
-            best_hi = hi;
+            best_b = b;
         }
     };
     for i in 0..p.len() {
@@ -443,34 +450,32 @@ fn scan_pruned_best<K: Kernel>(p: &[DVec2], q: &[DVec2], interior_only: bool) ->
     let (bp, bq) = (boxes(p), boxes(q));
     let mut best = Cand::Vv(0, 0);
     let mut best_d = best.dist(p, q);
-    // As in `scan`: with `interior_only`, candidates bounded strictly above the best are skipped.
-    let mut best_hi = if interior_only {
-        bounds(best, p, q).1
+    // As in `scan`: with `interior_only`, candidates bounded strictly above the best are skipped and
+    // candidates bounded strictly below it are taken.
+    let mut best_b = if interior_only {
+        bounds(best, p, q)
     } else {
-        f64::INFINITY
+        (0.0, f64::INFINITY)
     };
     let mut consider = |c: Cand, best: &mut Cand, best_d: &mut Dist2| {
-        let (lo, hi) = if interior_only {
+        let b = if interior_only {
             bounds(c, p, q)
         } else {
             (0.0, f64::INFINITY)
         };
-        if lo > best_hi || !admitted::<K>(c, p, q, interior_only) {
+        if b.0 > best_b.1 || !admitted::<K>(c, p, q, interior_only) {
             return;
         }
         let d = c.dist(p, q);
-        match K::cmp_dist2(d, *best_d) {
-            Ordering::Less => {
-                *best = c;
-                *best_d = d;
-                best_hi = hi;
-            }
-            Ordering::Equal if c < *best => {
-                *best = c;
-                *best_d = d;
-                best_hi = hi;
-            }
-            _ => {}
+        let order = if b.1 < best_b.0 {
+            Ordering::Less
+        } else {
+            K::cmp_dist2(d, *best_d)
+        };
+        if order == Ordering::Less || (order == Ordering::Equal && c < *best) {
+            *best = c;
+            *best_d = d;
+            best_b = b;
         }
     };
     let approx = |a: &BoxNode, b: &BoxNode| {
