@@ -56,8 +56,12 @@ fn main() {
     for _ in 0..reps {
         if kern.contains('r') {
             let t = Instant::now();
-            let d = separation_of_disjoint::<Robust>(&p, &q).unwrap().distance();
-            println!("{which} {n}: robust {:?} d={d}", t.elapsed());
+            let r = separation_of_disjoint::<Robust>(&p, &q).unwrap();
+            let el = t.elapsed();
+            println!("{which} {n}: robust {el:?} d={}", r.distance());
+            if let polydist_separation::PolygonSeparation::Separated { stats, .. } = &r {
+                println!("  {stats:?}");
+            }
         }
         if kern.contains('f') {
             let t = Instant::now();

@@ -84,6 +84,11 @@ pub enum Dist2 {
     PointPoint(DVec2, DVec2),
     /// The squared distance from `p` to the closed segment `[a, b]` (`a == b` allowed).
     PointSegment(DVec2, DVec2, DVec2),
+    /// The squared distance from `p` to the *line* through `a` and `b`. It equals the segment's when
+    /// the foot of `p` is strictly inside `[a, b]`: a caller that has established that (a scan that
+    /// admits only such vertex–edge pairs) saves the two dot signs that locate the foot, on every
+    /// comparison. `a == b` is taken as the point `a`.
+    PointLine(DVec2, DVec2, DVec2),
 }
 
 /// A squared distance resolved to its polynomial form.
@@ -100,6 +105,8 @@ enum Resolved {
 fn resolve<K: Kernel>(d: Dist2) -> Resolved {
     match d {
         Dist2::PointPoint(p, q) => Resolved::Points(p, q),
+        Dist2::PointLine(p, a, b) if a == b => Resolved::Points(p, a),
+        Dist2::PointLine(p, a, b) => Resolved::Perp(p, a, b),
         Dist2::PointSegment(p, a, b) => {
             // (p − a)·(b − a) ≤ 0: the nearest point is a; (p − b)·(a − b) ≤ 0: it is b.
             if K::dot_sign(a, p, a, b) != Sign::Positive {

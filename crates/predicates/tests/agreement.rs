@@ -69,6 +69,40 @@ fn check_all<K: Kernel>(a: DVec2, b: DVec2, c: DVec2, d: DVec2) {
         "{} ps/ps'",
         K::NAME
     );
+    // Line distances, against points, segments and lines.
+    let pl = Dist2::PointLine(a, c, d);
+    let pl2 = Dist2::PointLine(c, a, b);
+    assert_eq!(
+        K::cmp_dist2(pl, pp),
+        d2_line(a, c, d).cmp(&d2(a, b)),
+        "{} pl/pp",
+        K::NAME
+    );
+    assert_eq!(
+        K::cmp_dist2(ps2, pl),
+        d2_seg(b, c, d).cmp(&d2_line(a, c, d)),
+        "{} ps/pl",
+        K::NAME
+    );
+    assert_eq!(
+        K::cmp_dist2(pl, pl2),
+        d2_line(a, c, d).cmp(&d2_line(c, a, b)),
+        "{} pl/pl",
+        K::NAME
+    );
+}
+
+/// The squared distance from `p` to the line through `a` and `b` (the point `a` when `a == b`).
+fn d2_line(p: DVec2, a: DVec2, b: DVec2) -> num_rational::BigRational {
+    use common::q;
+    let (ex, ey) = (q(b.x) - q(a.x), q(b.y) - q(a.y));
+    let (wx, wy) = (q(p.x) - q(a.x), q(p.y) - q(a.y));
+    let l2 = &ex * &ex + &ey * &ey;
+    if a == b {
+        return d2(p, a);
+    }
+    let cr = &ex * &wy - &ey * &wx;
+    &cr * &cr / l2
 }
 
 fn check_every_kernel(a: DVec2, b: DVec2, c: DVec2, d: DVec2) {

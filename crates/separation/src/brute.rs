@@ -136,6 +136,16 @@ enum Cand {
 }
 
 impl Cand {
+    /// The candidate's distance for a scan that admits only vertex–edge pairs whose foot is strictly
+    /// inside the edge (`interior_only`): the line distance, which is then the segment's.
+    fn admitted_dist(self, p: &[DVec2], q: &[DVec2]) -> Dist2 {
+        match self {
+            Cand::Vv(i, j) => Dist2::PointPoint(p[i], q[j]),
+            Cand::PvQe(i, j) => Dist2::PointLine(p[i], q[j], q[j + 1]),
+            Cand::QvPe(j, i) => Dist2::PointLine(q[j], p[i], p[i + 1]),
+        }
+    }
+
     fn dist(self, p: &[DVec2], q: &[DVec2]) -> Dist2 {
         match self {
             Cand::Vv(i, j) => Dist2::PointPoint(p[i], q[j]),
@@ -327,6 +337,14 @@ fn scan_best<K: Kernel>(p: &[DVec2], q: &[DVec2], interior_only: bool) -> Cand {
     let mut best = Cand::Vv(0, 0);
     // With `interior_only`, a candidate whose distance is bounded strictly above the best's is
     // skipped before any predicate: it cannot win, so the answer is unchanged.
+    // Admitted vertex–edge pairs have their foot strictly inside: their line distance is theirs.
+    let dist = |c: Cand| {
+        if interior_only {
+            c.admitted_dist(p, q)
+        } else {
+            c.dist(p, q)
+        }
+    };
     // A candidate bounded strictly above the best cannot win, one bounded strictly below it wins:
     // only overlapping bounds (near ties) need the exact comparison.
     let mut best_b = if interior_only {
@@ -343,7 +361,7 @@ fn scan_best<K: Kernel>(p: &[DVec2], q: &[DVec2], interior_only: bool) -> Cand {
         if b.0 > best_b.1 || !admitted::<K>(c, p, q, interior_only) {
             return;
         }
-        if b.1 < best_b.0 || K::cmp_dist2(c.dist(p, q), best.dist(p, q)) == Ordering::Less {
+        if b.1 < best_b.0 || K::cmp_dist2(dist(c), dist(best)) == Ordering::Less {
             best = c;
             best_b = b;
         }
@@ -449,7 +467,14 @@ pub(crate) fn scan_pruned_winner<K: Kernel>(
 fn scan_pruned_best<K: Kernel>(p: &[DVec2], q: &[DVec2], interior_only: bool) -> Cand {
     let (bp, bq) = (boxes(p), boxes(q));
     let mut best = Cand::Vv(0, 0);
-    let mut best_d = best.dist(p, q);
+    let dist = |c: Cand| {
+        if interior_only {
+            c.admitted_dist(p, q)
+        } else {
+            c.dist(p, q)
+        }
+    };
+    let mut best_d = dist(best);
     // As in `scan`: with `interior_only`, candidates bounded strictly above the best are skipped and
     // candidates bounded strictly below it are taken.
     let mut best_b = if interior_only {
@@ -466,7 +491,7 @@ fn scan_pruned_best<K: Kernel>(p: &[DVec2], q: &[DVec2], interior_only: bool) ->
         if b.0 > best_b.1 || !admitted::<K>(c, p, q, interior_only) {
             return;
         }
-        let d = c.dist(p, q);
+        let d = dist(c);
         let order = if b.1 < best_b.0 {
             Ordering::Less
         } else {

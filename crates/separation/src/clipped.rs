@@ -155,6 +155,8 @@ enum Input {
 fn input<K: Kernel>(d: Dist2) -> Input {
     match d {
         Dist2::PointPoint(p, q) => Input::Points(p, q),
+        Dist2::PointLine(p, a, b) if a == b => Input::Points(p, a),
+        Dist2::PointLine(p, a, b) => Input::Perp(p, a, b),
         Dist2::PointSegment(p, a, b) => {
             if K::dot_sign(a, p, a, b) != Sign::Positive {
                 Input::Points(p, a)
