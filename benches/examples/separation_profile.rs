@@ -3,8 +3,9 @@
 //! Robust and/or Fast kernel, printing each run's wall time and distance.
 //!
 //! `cargo run --release -p polydist-benches --example separation_profile -- <family> <N> <runs> <kernels>`
-//! with family `combs` (interlocked, every clearance tied), `jit` (the same, jittered), `saw`
-//! (saw-teeth tip to notch, section 3), and kernels `r`, `f` or `rf` (default `combs 131072 5 rf`).
+//! with family `combs` (interlocked, every clearance tied), `jit` (the same, jittered), `pocket` (a
+//! star in a C's pocket, the containing case), `saw` (saw-teeth tip to notch, section 3), and kernels any of `r` (Robust), `f` (Fast) and `g` (geo's
+//! distance, once per run, for sizes its criterion series skips) (default `combs 131072 5 rf`).
 //! Figures only; the benchmarks are the reference.
 
 use glam::DVec2;
@@ -39,6 +40,34 @@ fn main() {
             };
             (jitter(&pair.a), jitter(&pair.b))
         }
+        "pocket" => {
+            // The bench's star in the pocket of a "C" (`polygons/pocket`).
+            use std::f64::consts::TAU;
+            let half = (n / 2).max(8);
+            let (n_out, n_in) = (half / 4, half - half / 4);
+            let gap = 0.5;
+            let at = |a: f64, r: f64| DVec2::new(a.cos(), a.sin()) * r;
+            let span = TAU - gap;
+            let mut c: Vec<DVec2> = (0..n_out)
+                .map(|k| at(gap / 2.0 + span * k as f64 / (n_out - 1) as f64, 4.0))
+                .collect();
+            c.extend((0..n_in).map(|k| {
+                let r = if k % 2 == 0 { 2.0 } else { 2.5 };
+                at(
+                    gap / 2.0 + span * (n_in - 1 - k) as f64 / (n_in - 1) as f64,
+                    r,
+                )
+            }));
+            let star: Vec<DVec2> = (0..half)
+                .map(|k| {
+                    at(
+                        TAU * k as f64 / half as f64,
+                        if k % 2 == 0 { 1.0 } else { 0.5 },
+                    )
+                })
+                .collect();
+            (star, c)
+        }
         "saw" => {
             let p = polydist_oracle::sawtooth((n / 4).max(1));
             let q: Vec<DVec2> = p
@@ -62,6 +91,21 @@ fn main() {
             if let polydist_separation::PolygonSeparation::Separated { stats, .. } = &r {
                 println!("  {stats:?}");
             }
+        }
+        if kern.contains('g') {
+            // geo's `Euclidean.distance` between the two polygons, for the ratio at sizes the
+            // criterion benchmark does not run geo at (it takes seconds there).
+            use geo::{Distance, Euclidean, LineString, Polygon};
+            let poly = |c: &[DVec2]| {
+                Polygon::new(
+                    LineString::from(c.iter().map(|v| (v.x, v.y)).collect::<Vec<_>>()),
+                    vec![],
+                )
+            };
+            let (gp, gq) = (poly(&a), poly(&b));
+            let t = Instant::now();
+            let d = Euclidean.distance(&gp, &gq);
+            println!("{which} {n}: geo {:?} d={d}", t.elapsed());
         }
         if kern.contains('f') {
             let t = Instant::now();
