@@ -241,10 +241,11 @@ impl Triangulation {
         }
         let mut neighbors = vec![[Neighbor::RingEdge(0); 3]; triangles.len()];
         let mut vertex_triangle = vec![u32::MAX; n];
-        // Every diagonal is the side of exactly two triangles, once in each direction: sort the
-        // non-ring sides by their unordered ends (one sort of 2(n − 3) keys, no hashing) and pair them.
-        // A side's key is (min << 32 | max); its direction bit says whether it runs min → max.
-        let mut sides: Vec<(u64, u32, u8)> = Vec::with_capacity(2 * n);
+        // Every diagonal is the side of exactly two triangles, once in each direction. The non-ring
+        // sides are bucketed by their smaller end (a counting sort, `O(n)`), each bucket is sorted by
+        // the larger end (buckets hold a vertex's diagonals: small but for fans), and equal keys are
+        // paired. A side is (larger end, triangle, corner << 1 | [runs smaller → larger]).
+        let mut sides: Vec<(u32, u32, u32, u8)> = Vec::with_capacity(2 * n);
         for (t, tri) in triangles.iter().enumerate() {
             let t = t as u32;
             for k in 0..3 {
@@ -256,24 +257,39 @@ impl Triangulation {
                 if (u as usize + 1) % n == w as usize {
                     neighbors[t as usize][k] = Neighbor::RingEdge(u);
                 } else {
-                    let key = (u64::from(u.min(w)) << 32) | u64::from(u.max(w));
-                    sides.push((key, t, ((k as u8) << 1) | u8::from(u < w)));
+                    sides.push((u.min(w), u.max(w), t, ((k as u8) << 1) | u8::from(u < w)));
                 }
             }
         }
-        sides.sort_unstable_by_key(|s| s.0);
-        let mut i = 0;
-        while i < sides.len() {
-            let (key, t, kd) = sides[i];
-            let Some(&(_, t2, kd2)) = sides.get(i + 1).filter(|s| s.0 == key) else {
-                return Err(bad((key >> 32) as u32, "a diagonal has no twin"));
-            };
-            if kd & 1 == kd2 & 1 || sides.get(i + 2).is_some_and(|s| s.0 == key) {
-                return Err(bad((key >> 32) as u32, "a side appears twice"));
+        let mut start = vec![0usize; n + 1];
+        for s in &sides {
+            start[s.0 as usize + 1] += 1;
+        }
+        for v in 0..n {
+            start[v + 1] += start[v];
+        }
+        let mut fill = start.clone();
+        let mut bucketed = vec![(0u32, 0u32, 0u8); sides.len()];
+        for &(lo, hi, t, kd) in &sides {
+            bucketed[fill[lo as usize]] = (hi, t, kd);
+            fill[lo as usize] += 1;
+        }
+        for lo in 0..n {
+            let bucket = &mut bucketed[start[lo]..start[lo + 1]];
+            bucket.sort_unstable_by_key(|s| s.0);
+            let mut i = 0;
+            while i < bucket.len() {
+                let (hi, t, kd) = bucket[i];
+                let Some(&(_, t2, kd2)) = bucket.get(i + 1).filter(|s| s.0 == hi) else {
+                    return Err(bad(lo as u32, "a diagonal has no twin"));
+                };
+                if kd & 1 == kd2 & 1 || bucket.get(i + 2).is_some_and(|s| s.0 == hi) {
+                    return Err(bad(lo as u32, "a side appears twice"));
+                }
+                neighbors[t as usize][usize::from(kd >> 1)] = Neighbor::Triangle(t2);
+                neighbors[t2 as usize][usize::from(kd2 >> 1)] = Neighbor::Triangle(t);
+                i += 2;
             }
-            neighbors[t as usize][usize::from(kd >> 1)] = Neighbor::Triangle(t2);
-            neighbors[t2 as usize][usize::from(kd2 >> 1)] = Neighbor::Triangle(t);
-            i += 2;
         }
         if let Some(v) = vertex_triangle.iter().position(|&t| t == u32::MAX) {
             return Err(bad(v as u32, "a vertex is in no triangle"));
