@@ -42,6 +42,7 @@ use glam::DVec2;
 use parry2d_f64::math::{Pose, Vector};
 use parry2d_f64::query;
 use parry2d_f64::shape::Polyline;
+use polydist_benches::{interlocked_combs, interlocked_combs_jittered, pocket, sawteeth};
 use polydist_oracle::SplitMix64;
 use polydist_polygon::SimplePolygon;
 use polydist_predicates::{Exact, Fast, Kernel, Robust};
@@ -108,70 +109,6 @@ fn combs(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
         .map(|v| DVec2::new(v.x, 2.0 * top + 1.0 - v.y))
         .collect();
     (a, b)
-}
-
-/// Two combs with interleaved teeth (`polydist_oracle::interleaved_combs`), clearance 1/8.
-fn interlocked_combs(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
-    let pair = polydist_oracle::interleaved_combs((n / 8).max(1), 5, 0.125);
-    (pair.a, pair.b)
-}
-
-/// [`interlocked_combs`] with every vertex moved by a random multiple of `2^−12` below `1/64` in
-/// each coordinate: still simple and disjoint (edges are at least 1 long, clearances stay above
-/// 1/8 − 1/32), but no two clearances tie.
-fn interlocked_combs_jittered(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
-    let (a, b) = interlocked_combs(n);
-    let mut rng = SplitMix64::new(0x1177 ^ n as u64);
-    let mut jitter = |v: &[DVec2]| -> Vec<DVec2> {
-        v.iter()
-            .map(|&x| {
-                let d = DVec2::new(rng.range_i64(-63, 64) as f64, rng.range_i64(-63, 64) as f64);
-                x + d * 2f64.powi(-12)
-            })
-            .collect()
-    };
-    (jitter(&a), jitter(&b))
-}
-
-/// A spiky star in the pocket of a "C" (see the module docs), `n` vertices in all.
-fn pocket(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
-    let half = (n / 2).max(8);
-    let (n_out, n_in) = (half / 4, half - half / 4);
-    let gap = 0.5;
-    let at = |a: f64, r: f64| DVec2::new(a.cos(), a.sin()) * r;
-    let span = TAU - gap;
-    let mut c: Vec<DVec2> = (0..n_out)
-        .map(|k| at(gap / 2.0 + span * k as f64 / (n_out - 1) as f64, 4.0))
-        .collect();
-    c.extend((0..n_in).map(|k| {
-        let r = if k % 2 == 0 { 2.0 } else { 2.5 };
-        at(
-            gap / 2.0 + span * (n_in - 1 - k) as f64 / (n_in - 1) as f64,
-            r,
-        )
-    }));
-    let star: Vec<DVec2> = (0..half)
-        .map(|k| {
-            at(
-                TAU * k as f64 / half as f64,
-                if k % 2 == 0 { 1.0 } else { 0.5 },
-            )
-        })
-        .collect();
-    (star, c)
-}
-
-/// A slab `[0, 4] × [0, h]` with `t` saw teeth on its right side (tips at `x = 5`), and its mirror
-/// image right of it, shifted by half a tooth so that tips face notches, `1/4` beyond the tips.
-fn sawteeth(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
-    let p = polydist_oracle::sawtooth((n / 4).max(1));
-    // The mirror image x ↦ 10.25 − x, moved up by one (tips opposite notches), counter-clockwise.
-    let q: Vec<DVec2> = p
-        .iter()
-        .rev()
-        .map(|v| DVec2::new(10.25 - v.x, v.y + 1.0))
-        .collect();
-    (p, q)
 }
 
 fn polyline(c: &[DVec2]) -> Polyline {

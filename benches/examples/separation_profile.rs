@@ -9,6 +9,7 @@
 //! Figures only; the benchmarks are the reference.
 
 use glam::DVec2;
+use polydist_benches::{interlocked_combs, interlocked_combs_jittered, pocket, sawteeth};
 use polydist_polygon::SimplePolygon;
 use polydist_predicates::{Fast, Robust};
 use polydist_separation::separation_of_disjoint;
@@ -20,64 +21,11 @@ fn main() {
     let n: usize = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(131_072);
     let reps: usize = args.get(3).and_then(|s| s.parse().ok()).unwrap_or(5);
     let (a, b): (Vec<DVec2>, Vec<DVec2>) = match which {
-        "combs" => {
-            let pair = polydist_oracle::interleaved_combs((n / 8).max(1), 5, 0.125);
-            (pair.a, pair.b)
-        }
-        "jit" => {
-            let pair = polydist_oracle::interleaved_combs((n / 8).max(1), 5, 0.125);
-            let mut rng = polydist_oracle::SplitMix64::new(0x1177 ^ n as u64);
-            let mut jitter = |v: &[DVec2]| -> Vec<DVec2> {
-                v.iter()
-                    .map(|&x| {
-                        let d = DVec2::new(
-                            rng.range_i64(-63, 64) as f64,
-                            rng.range_i64(-63, 64) as f64,
-                        );
-                        x + d * 2f64.powi(-12)
-                    })
-                    .collect()
-            };
-            (jitter(&pair.a), jitter(&pair.b))
-        }
-        "pocket" => {
-            // The bench's star in the pocket of a "C" (`polygons/pocket`).
-            use std::f64::consts::TAU;
-            let half = (n / 2).max(8);
-            let (n_out, n_in) = (half / 4, half - half / 4);
-            let gap = 0.5;
-            let at = |a: f64, r: f64| DVec2::new(a.cos(), a.sin()) * r;
-            let span = TAU - gap;
-            let mut c: Vec<DVec2> = (0..n_out)
-                .map(|k| at(gap / 2.0 + span * k as f64 / (n_out - 1) as f64, 4.0))
-                .collect();
-            c.extend((0..n_in).map(|k| {
-                let r = if k % 2 == 0 { 2.0 } else { 2.5 };
-                at(
-                    gap / 2.0 + span * (n_in - 1 - k) as f64 / (n_in - 1) as f64,
-                    r,
-                )
-            }));
-            let star: Vec<DVec2> = (0..half)
-                .map(|k| {
-                    at(
-                        TAU * k as f64 / half as f64,
-                        if k % 2 == 0 { 1.0 } else { 0.5 },
-                    )
-                })
-                .collect();
-            (star, c)
-        }
-        "saw" => {
-            let p = polydist_oracle::sawtooth((n / 4).max(1));
-            let q: Vec<DVec2> = p
-                .iter()
-                .rev()
-                .map(|v| DVec2::new(10.25 - v.x, v.y + 1.0))
-                .collect();
-            (p, q)
-        }
-        _ => panic!(),
+        "combs" => interlocked_combs(n),
+        "jit" => interlocked_combs_jittered(n),
+        "pocket" => pocket(n),
+        "saw" => sawteeth(n),
+        _ => panic!("unknown family {which}"),
     };
     let p = SimplePolygon::try_new(&a).unwrap();
     let q = SimplePolygon::try_new(&b).unwrap();

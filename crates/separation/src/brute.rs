@@ -136,13 +136,23 @@ enum Cand {
 }
 
 impl Cand {
-    /// The candidate's distance for a scan that admits only vertex–edge pairs whose foot is strictly
-    /// inside the edge (`interior_only`): the line distance, which is then the segment's.
-    fn admitted_dist(self, p: &[DVec2], q: &[DVec2]) -> Dist2 {
+    /// The candidate's distance as a scan compares it. With `interior_only` the scan admits only
+    /// vertex–edge pairs whose foot is strictly inside the edge, so the line distance is theirs and
+    /// saves the dot signs that locate the foot.
+    fn scan_dist(self, p: &[DVec2], q: &[DVec2], interior_only: bool) -> Dist2 {
         match self {
-            Cand::Vv(i, j) => Dist2::PointPoint(p[i], q[j]),
-            Cand::PvQe(i, j) => Dist2::PointLine(p[i], q[j], q[j + 1]),
-            Cand::QvPe(j, i) => Dist2::PointLine(q[j], p[i], p[i + 1]),
+            Cand::PvQe(i, j) if interior_only => Dist2::PointLine(p[i], q[j], q[j + 1]),
+            Cand::QvPe(j, i) if interior_only => Dist2::PointLine(q[j], p[i], p[i + 1]),
+            _ => self.dist(p, q),
+        }
+    }
+
+    /// [`bounds`] for an `interior_only` scan; no bounds (`(0, ∞)`) otherwise.
+    fn scan_bounds(self, p: &[DVec2], q: &[DVec2], interior_only: bool) -> (f64, f64) {
+        if interior_only {
+            bounds(self, p, q)
+        } else {
+            (0.0, f64::INFINITY)
         }
     }
 
@@ -337,27 +347,12 @@ fn scan_best<K: Kernel>(p: &[DVec2], q: &[DVec2], interior_only: bool) -> Cand {
     let mut best = Cand::Vv(0, 0);
     // With `interior_only`, a candidate whose distance is bounded strictly above the best's is
     // skipped before any predicate: it cannot win, so the answer is unchanged.
-    // Admitted vertex–edge pairs have their foot strictly inside: their line distance is theirs.
-    let dist = |c: Cand| {
-        if interior_only {
-            c.admitted_dist(p, q)
-        } else {
-            c.dist(p, q)
-        }
-    };
+    let dist = |c: Cand| c.scan_dist(p, q, interior_only);
     // A candidate bounded strictly above the best cannot win, one bounded strictly below it wins:
     // only overlapping bounds (near ties) need the exact comparison.
-    let mut best_b = if interior_only {
-        bounds(best, p, q)
-    } else {
-        (0.0, f64::INFINITY)
-    };
+    let mut best_b = best.scan_bounds(p, q, interior_only);
     let mut consider = |c: Cand| {
-        let b = if interior_only {
-            bounds(c, p, q)
-        } else {
-            (0.0, f64::INFINITY)
-        };
+        let b = c.scan_bounds(p, q, interior_only);
         if b.0 > best_b.1 || !admitted::<K>(c, p, q, interior_only) {
             return;
         }
@@ -467,27 +462,13 @@ pub(crate) fn scan_pruned_winner<K: Kernel>(
 fn scan_pruned_best<K: Kernel>(p: &[DVec2], q: &[DVec2], interior_only: bool) -> Cand {
     let (bp, bq) = (boxes(p), boxes(q));
     let mut best = Cand::Vv(0, 0);
-    let dist = |c: Cand| {
-        if interior_only {
-            c.admitted_dist(p, q)
-        } else {
-            c.dist(p, q)
-        }
-    };
+    let dist = |c: Cand| c.scan_dist(p, q, interior_only);
     let mut best_d = dist(best);
     // As in `scan`: with `interior_only`, candidates bounded strictly above the best are skipped and
     // candidates bounded strictly below it are taken.
-    let mut best_b = if interior_only {
-        bounds(best, p, q)
-    } else {
-        (0.0, f64::INFINITY)
-    };
+    let mut best_b = best.scan_bounds(p, q, interior_only);
     let mut consider = |c: Cand, best: &mut Cand, best_d: &mut Dist2| {
-        let b = if interior_only {
-            bounds(c, p, q)
-        } else {
-            (0.0, f64::INFINITY)
-        };
+        let b = c.scan_bounds(p, q, interior_only);
         if b.0 > best_b.1 || !admitted::<K>(c, p, q, interior_only) {
             return;
         }
