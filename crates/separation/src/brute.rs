@@ -206,24 +206,18 @@ impl Winner {
         let (feature_p, feature_q) = self.features();
         match self.cand {
             Cand::Vv(..) => vertex_vertex(x, a, feature_p, feature_q),
-            Cand::PvQe(..) => {
+            Cand::PvQe(..) | Cand::QvPe(..) => {
                 let (squared, distance, foot) = vertex_edge(x, a, b);
+                let (point_p, point_q) = if matches!(self.cand, Cand::PvQe(..)) {
+                    (x, foot)
+                } else {
+                    (foot, x)
+                };
                 ClosestPair {
                     distance,
                     squared_distance: squared,
-                    point_p: x,
-                    point_q: foot,
-                    feature_p,
-                    feature_q,
-                }
-            }
-            Cand::QvPe(..) => {
-                let (squared, distance, foot) = vertex_edge(x, a, b);
-                ClosestPair {
-                    distance,
-                    squared_distance: squared,
-                    point_p: foot,
-                    point_q: x,
+                    point_p,
+                    point_q,
                     feature_p,
                     feature_q,
                 }
@@ -345,8 +339,6 @@ pub(crate) fn scan_winner<K: Kernel>(p: &[DVec2], q: &[DVec2], interior_only: bo
 
 fn scan_best<K: Kernel>(p: &[DVec2], q: &[DVec2], interior_only: bool) -> Cand {
     let mut best = Cand::Vv(0, 0);
-    // With `interior_only`, a candidate whose distance is bounded strictly above the best's is
-    // skipped before any predicate: it cannot win, so the answer is unchanged.
     let dist = |c: Cand| c.scan_dist(p, q, interior_only);
     // A candidate bounded strictly above the best cannot win, one bounded strictly below it wins:
     // only overlapping bounds (near ties) need the exact comparison.
