@@ -261,13 +261,11 @@ impl Triangulation {
                 }
             }
         }
-        let mut start = vec![0usize; n + 1];
+        let mut count = vec![0usize; n];
         for s in &sides {
-            start[s.0 as usize + 1] += 1;
+            count[s.0 as usize] += 1;
         }
-        for v in 0..n {
-            start[v + 1] += start[v];
-        }
+        let start = offsets_of(&count);
         let mut fill = start.clone();
         let mut bucketed = vec![(0u32, 0u32, 0u8); sides.len()];
         for &(lo, hi, t, kd) in &sides {
@@ -300,6 +298,19 @@ impl Triangulation {
             vertex_triangle,
         })
     }
+}
+
+/// The start of each bucket in a flat array holding `count[k]` items for bucket `k`, and the total
+/// at the end (`count.len() + 1` offsets): the layout of the counting sorts in `glue` and `pieces`.
+fn offsets_of(count: &[usize]) -> Vec<usize> {
+    let mut offsets = Vec::with_capacity(count.len() + 1);
+    let mut acc = 0;
+    offsets.push(0);
+    for &c in count {
+        acc += c;
+        offsets.push(acc);
+    }
+    offsets
 }
 
 /// The sweep order: `(x, y)` lexicographically (exact; `−0 = +0`).
@@ -531,20 +542,15 @@ fn pieces<K: Kernel>(
     let bad = |index: usize, what| TriangulationError::Inconsistent { index, what };
     // Outgoing sides per vertex, in one flat array (vertex v owns out[offsets[v]..offsets[v + 1]]):
     // slot 0 is the ring edge to v + 1, then the diagonals by angle.
-    let mut offsets = vec![1usize; n + 1];
+    let mut count = vec![1usize; n];
     for &(a, b) in diagonals {
         if a >= n || b >= n {
             return Err(bad(a.min(b), "a diagonal end is not a ring vertex"));
         }
-        offsets[a] += 1;
-        offsets[b] += 1;
+        count[a] += 1;
+        count[b] += 1;
     }
-    let mut acc = 0;
-    for o in &mut offsets {
-        let len = *o;
-        *o = acc;
-        acc += len;
-    }
+    let offsets = offsets_of(&count);
     let total = offsets[n];
     let mut out = vec![usize::MAX; total];
     let mut fill: Vec<usize> = offsets[..n].iter().map(|&o| o + 1).collect();
