@@ -11,7 +11,7 @@ use monotone_minima::Matrix;
 use polydist_predicates::{Dist2, Kernel, Sign};
 
 use crate::chain::{EnvEdge, validate};
-use crate::clipped::{Val, cmp_val, resolve_clipped};
+use crate::clipped::EdgePart;
 use crate::envelope::prepare;
 use crate::error::{Chain, SeparationError};
 use crate::frame::Frame;
@@ -21,40 +21,21 @@ use crate::sigma::real_edges;
 use crate::wedge::{Apex, apexes};
 
 /// An entry of the CVE matrix: like [`MatrixEntry`](crate::MatrixEntry), with the distance from
-/// the column vertex `q` to the row piece's edge `[a, b]`, or to the part of it on the envelope when
-/// that part ends at a shadow point. Either is a true distance between the chains, never below σ,
-/// and equal to the piece's distance when the piece realizes σ.
+/// the column vertex `q` to the row's piece of an edge.
+///
+/// Entries of one row (one piece) are ordered by the distance to the piece itself, its ends kept
+/// symbolic ([`EdgePart`]): the order SMAWK needs (Lemma 7's matrix). Entries of different rows,
+/// compared only to pick the least row minimum, are ordered by the distance to the whole edge: a
+/// true distance between the chains, never below σ, and at most the piece's distance, so it equals
+/// σ for the row whose piece realizes σ.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum EdgeEntry {
-    /// `d(q, [a, b])`.
+    /// `d(q, piece)`.
     Dist {
         /// The column vertex.
         q: DVec2,
-        /// The row edge's start.
-        a: DVec2,
-        /// The row edge's end.
-        b: DVec2,
-    },
-    /// `d(q, [s, t])`, the part of `[a, b]` (`a` the lower end along `l1 − l0`) between the
-    /// heights of `lo` and `hi`: the row edge passes behind the visible vertex `lo` (below) or
-    /// `hi` (above) of its chain, and only the part between them is on the envelope (Lemma 2);
-    /// `None` is the edge's own end. The shadow points `s`, `t` are never constructed
-    /// (comparisons are exact polynomial signs of degree ≤ 10).
-    ClippedDist {
-        /// The column vertex.
-        q: DVec2,
-        /// The row edge's lower end.
-        a: DVec2,
-        /// The row edge's upper end.
-        b: DVec2,
-        /// The visible vertex whose height bounds the part from below, if not `a`'s own.
-        lo: Option<DVec2>,
-        /// The visible vertex whose height bounds the part from above, if not `b`'s own.
-        hi: Option<DVec2>,
-        /// The separating line's first point.
-        l0: DVec2,
-        /// The separating line's second point (heights grow along `l1 − l0`).
-        l1: DVec2,
+        /// The row's piece.
+        piece: EdgePart,
     },
     /// `B + n_q − j`, holding `n_q − j`.
     Penalty(usize),
@@ -62,37 +43,29 @@ pub enum EdgeEntry {
     Infinity,
 }
 
-fn resolve<K: Kernel>(x: &EdgeEntry) -> Option<Val> {
-    match *x {
-        EdgeEntry::Dist { q, a, b } => Some(Val::Input(Dist2::PointSegment(q, a, b))),
-        EdgeEntry::ClippedDist {
-            q,
-            a,
-            b,
-            lo,
-            hi,
-            l0,
-            l1,
-        } => Some(resolve_clipped::<K>(q, a, b, lo, hi, (l0, l1))),
-        _ => None,
-    }
-}
-
-/// The exact order of [`EdgeEntry`] under `K` (`cmp_dist2`, degree ≤ 6, for two distances to
-/// whole edges; up to degree 10 with shadow points).
+/// The exact order of [`EdgeEntry`] under `K`: distances before penalties before infinities;
+/// distances to one piece by [`EdgePart`]'s exact comparison (signs of degree ≤ 16), distances to
+/// different pieces by `cmp_dist2` of the whole edges (degree ≤ 6); penalties by their integer.
 #[must_use]
 pub fn compare_edge_entries<K: Kernel>(x: &EdgeEntry, y: &EdgeEntry) -> Ordering {
-    use EdgeEntry::Penalty;
-    match (resolve::<K>(x), resolve::<K>(y)) {
-        (Some(u), Some(w)) => cmp_val::<K>(&u, &w),
-        (Some(_), None) => Ordering::Less,
-        (None, Some(_)) => Ordering::Greater,
-        (None, None) => match (x, y) {
-            (Penalty(s), Penalty(t)) => s.cmp(t),
-            (Penalty(_), _) => Ordering::Less,
-            (_, Penalty(_)) => Ordering::Greater,
-            _ => Ordering::Equal,
-        },
+    use EdgeEntry::{Dist, Penalty};
+    match (x, y) {
+        (Dist { q: q1, piece: p1 }, Dist { q: q2, piece: p2 }) => {
+            if p1 == p2 {
+                p1.cmp_dist::<K>(*q1, *q2)
+            } else {
+                K::cmp_dist2(
+                    Dist2::PointSegment(*q1, p1.a, p1.b),
+                    Dist2::PointSegment(*q2, p2.a, p2.b),
+                )
+            }
+        }
+        (Dist { .. }, _) => Ordering::Less,
+        (_, Dist { .. }) => Ordering::Greater,
+        (Penalty(s), Penalty(t)) => s.cmp(t),
+        (Penalty(_), _) => Ordering::Less,
+        (_, Penalty(_)) => Ordering::Greater,
+        _ => Ordering::Equal,
     }
 }
 
@@ -554,23 +527,14 @@ impl<K: Kernel> Matrix for CveMatrix<K> {
             EdgeEntry::Infinity
         } else {
             let r = &self.edges[pc.edge];
-            let shadow = |p: &Param| match p {
-                Param::Root(g) => Some(g.c),
-                _ => None,
-            };
-            let (lo, hi) = (shadow(&r.lo), shadow(&r.hi));
-            if lo.is_none() && hi.is_none() {
-                EdgeEntry::Dist { q, a: r.a, b: r.b }
-            } else {
-                EdgeEntry::ClippedDist {
-                    q,
+            EdgeEntry::Dist {
+                q,
+                piece: EdgePart {
                     a: r.a,
                     b: r.b,
-                    lo,
-                    hi,
-                    l0: self.fp.l0,
-                    l1: self.fp.l1,
-                }
+                    bot: pc.bot,
+                    top: pc.top,
+                },
             }
         }
     }

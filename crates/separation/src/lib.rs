@@ -82,6 +82,7 @@ mod triangulate;
 mod wedge;
 
 pub use brute::{closest_visible_vertices_brute, separation_brute};
+pub use clipped::EdgePart;
 pub use cve::{CveMatrix, EdgeEntry, compare_edge_entries};
 pub use cvv::{CvvMatrix, MatrixEntry, closest_visible_vertices, compare_entries};
 pub use envelope::{Envelope, perpendicular_envelope, perpendicular_envelope_brute};

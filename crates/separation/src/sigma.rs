@@ -52,7 +52,7 @@ fn cve<K: Kernel>(m: &CveMatrix<K>, edges: &Prepared, p_side: bool) -> Option<Ca
     let mut best: Option<(usize, usize, EdgeEntry)> = None;
     for (i, &j) in minima.iter().enumerate() {
         let e = monotone_minima::Matrix::entry(m, i, j);
-        if !matches!(e, EdgeEntry::Dist { .. } | EdgeEntry::ClippedDist { .. }) {
+        if !matches!(e, EdgeEntry::Dist { .. }) {
             continue;
         }
         if best

@@ -520,18 +520,27 @@ fn envelope_of_spirals_and_stars_matches_the_twin() {
 
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(300))]
-    /// σ, its features, the brute force and the envelopes (matrices are not checked here: see
-    /// `known_total_monotonicity_violation`, found by this proptest).
+    /// σ, its features, the brute force, the envelopes, and every matrix (total monotonicity,
+    /// SMAWK's minima against the brute force's). It found
+    /// `regression_whole_edge_entries_broke_total_monotonicity`.
     #[test]
     fn proptest_polygons_agree_with_oracle(seed in any::<u64>(), size in 3usize..16,
                                            open in any::<bool>(), far in any::<bool>(),
                                            extra in 0i64..3) {
-        let mut rng = SplitMix64::new(seed);
-        let rot = ROTS[rng.index(ROTS.len())];
-        let off = if far { DVec2::new(-1e12, 4e12) } else { DVec2::ZERO };
-        let c = polygon_pair(&mut rng, size, size, extra, rot, off, open);
-        agree::<Robust>(&c, false);
+        agree::<Robust>(&proptest_case(seed, size, open, far, extra), true);
     }
+}
+
+/// The case the proptest draws for its parameters.
+fn proptest_case(seed: u64, size: usize, open: bool, far: bool, extra: i64) -> Case {
+    let mut rng = SplitMix64::new(seed);
+    let rot = ROTS[rng.index(ROTS.len())];
+    let off = if far {
+        DVec2::new(-1e12, 4e12)
+    } else {
+        DVec2::ZERO
+    };
+    polygon_pair(&mut rng, size, size, extra, rot, off, open)
 }
 
 /// The envelope against an independent exact definition (rationals, line `x = 0`, chains on
@@ -624,17 +633,19 @@ fn envelope_matches_exact_definition() {
     assert!(checked > 1000, "{checked}");
 }
 
-/// A CVE matrix that is **not** totally monotone (found by the proptest on closed polygons, seed in
-/// `general.proptest-regressions`). Cause: `Dist` entries hold the distance to the row's *whole* edge,
-/// and here the nearest point of that edge to the far, nearly coincident columns is its start, outside
-/// the piece the `α` clip left (`t ∈ [0.769, 1]`); the piece's own distances order the columns
-/// consistently with the row below. The second case is the same configuration as a monotone chain
-/// with a perpendicular run, which the monotone-chain code of earlier branches builds identically.
-/// σ is still right here and in 150,000 proptest cases (checked against the exact oracle), but
-/// SMAWK's minima are only guaranteed on totally monotone matrices: see the docs, "Not done". This
-/// test pins the current behaviour; when the entries are fixed it fails, and the docs must say so.
+/// A CVE matrix that was **not** totally monotone while `Dist` entries held the distance to the
+/// row's *whole* edge (found by the proptest on closed polygons, seed in
+/// `general.proptest-regressions`): the nearest point of that edge to the far, nearly coincident
+/// columns is its start, outside the piece the `α` clip left (`t ∈ [0.769, 1]`), and the whole-edge
+/// distances ordered the columns `q1 < q0 < q2` where the piece's own order `q1 < q2 < q0` is
+/// consistent with the row below. The second case is the same configuration as a monotone chain with
+/// a perpendicular run. The third case (an open 2-opt chain against a comb with collinear runs,
+/// rows 2–3, columns 0–4) is the first failure of a 200,000-case run of the proptest against the
+/// envelope-part entries that came between, after 54,159 cases. Entries now hold the distance to the
+/// piece, its arc ends kept symbolic (`clipped.rs`): every matrix is totally monotone and SMAWK's
+/// minima are the brute force's.
 #[test]
-fn known_total_monotonicity_violation() {
+fn regression_whole_edge_entries_broke_total_monotonicity() {
     let v = |x: f64, y: f64| DVec2::new(x, y);
     let polygon = vec![
         v(-805699.0, 140027.0),
@@ -693,15 +704,10 @@ fn known_total_monotonicity_violation() {
             b: DVec2::Y,
             name: "monotone with a run".into(),
         },
+        proptest_case(14_620_136_695_611_095_605, 10, true, false, 2),
     ] {
-        // σ right (oracle), everything else checked except the one matrix.
-        agree::<Robust>(&c, false);
-        agree::<Exact>(&c, false);
-        let m = CveMatrix::<Robust>::new(&c.p, &c.q, c.a, c.b).unwrap();
-        assert!(
-            check_totally_monotone_by(&m, compare_edge_entries::<Robust>).is_err(),
-            "{}: now totally monotone: update docs/algorithms/separation.md",
-            c.name
-        );
+        // σ (oracle), features, envelopes, and every matrix: totally monotone, SMAWK = brute force.
+        agree::<Robust>(&c, true);
+        agree::<Exact>(&c, true);
     }
 }
