@@ -4,7 +4,8 @@
 //!
 //! `cargo run --release -p polydist-benches --example separation_profile -- <family> <N> <runs> <kernels>`
 //! with family `combs` (interlocked, every clearance tied), `jit` (the same, jittered), `pocket` (a
-//! star in a C's pocket, the containing case), `saw` (saw-teeth tip to notch, section 3), and kernels any of `r` (Robust), `f` (Fast) and `g` (geo's
+//! star in a C's pocket, the containing case), `saw` (saw-teeth tip to notch, section 3), `dec` (the tied
+//! combs scaled by 0.1: decimal coordinates, whose ties the error-free stage cannot settle), and kernels any of `r` (Robust), `f` (Fast) and `g` (geo's
 //! distance, once per run, for sizes its criterion series skips) (default `combs 131072 5 rf`).
 //! Figures only; the benchmarks are the reference.
 
@@ -25,6 +26,11 @@ fn main() {
         "jit" => interlocked_combs_jittered(n),
         "pocket" => pocket(n),
         "saw" => sawteeth(n),
+        "dec" => {
+            let (a, b) = interlocked_combs(n);
+            let s = |v: Vec<DVec2>| v.into_iter().map(|p| p * 0.1).collect();
+            (s(a), s(b))
+        }
         _ => panic!("unknown family {which}"),
     };
     let p = SimplePolygon::try_new(&a).unwrap();

@@ -178,32 +178,53 @@ impl Expansion {
     /// `self + other`, exactly (linear expansion sum with zero elimination, Shewchuk Theorem 13).
     #[must_use]
     pub fn add(&self, other: &Self) -> Self {
+        self.sum(other, false)
+    }
+
+    /// `−self`, exactly.
+    #[must_use]
+    pub fn neg(&self) -> Self {
+        Expansion {
+            comps: self.comps.iter().map(|&x| -x).collect(),
+        }
+    }
+
+    /// `self − other`, exactly (the sum with `other`'s components negated as they are merged).
+    #[must_use]
+    pub fn sub(&self, other: &Self) -> Self {
+        self.sum(other, true)
+    }
+
+    /// `self ± other`: Shewchuk's Linear-Expansion-Sum (Theorem 13) with zero elimination, the two
+    /// component sequences merged by magnitude as the sweep consumes them (no merged copy, no negated
+    /// copy of `other`). The merged sequence is strongly nonoverlapping-compatible and the sweep exact.
+    fn sum(&self, other: &Self, negate: bool) -> Self {
         let (e, f) = (&self.comps[..], &other.comps[..]);
+        let sign = if negate { -1.0 } else { 1.0 };
         if e.is_empty() {
-            return other.clone();
+            return if negate { other.neg() } else { other.clone() };
         }
         if f.is_empty() {
             return self.clone();
         }
-        // Merge the two sequences by magnitude, then sweep with Two-Sum (Shewchuk's Linear-Expansion-Sum,
-        // Theorem 13: the merged sequence is strongly nonoverlapping-compatible and the sweep is exact).
-        let mut merged: SmallVec<[f64; 2 * INLINE]> = SmallVec::with_capacity(e.len() + f.len());
         let (mut i, mut j) = (0, 0);
-        while i < e.len() && j < f.len() {
-            if e[i].abs() < f[j].abs() {
-                merged.push(e[i]);
+        // The next component of the merge by increasing magnitude (ties take `f`'s first).
+        let mut next = || {
+            if i < e.len() && (j == f.len() || e[i].abs() < f[j].abs()) {
                 i += 1;
+                e[i - 1]
             } else {
-                merged.push(f[j]);
                 j += 1;
+                sign * f[j - 1]
             }
-        }
-        merged.extend_from_slice(&e[i..]);
-        merged.extend_from_slice(&f[j..]);
-        let mut out: SmallVec<[f64; INLINE]> = SmallVec::with_capacity(merged.len());
-        let (mut q, mut qq) = fast_two_sum(merged[1], merged[0]);
-        for &g in &merged[2..] {
-            let (r, h) = fast_two_sum(g, qq);
+        };
+        let total = e.len() + f.len();
+        let g0 = next();
+        let g1 = next();
+        let mut out: SmallVec<[f64; INLINE]> = SmallVec::with_capacity(total);
+        let (mut q, mut qq) = fast_two_sum(g1, g0);
+        for _ in 2..total {
+            let (r, h) = fast_two_sum(next(), qq);
             if h != 0.0 {
                 out.push(h);
             }
@@ -218,20 +239,6 @@ impl Expansion {
             out.push(q);
         }
         Expansion { comps: out }
-    }
-
-    /// `−self`, exactly.
-    #[must_use]
-    pub fn neg(&self) -> Self {
-        Expansion {
-            comps: self.comps.iter().map(|&x| -x).collect(),
-        }
-    }
-
-    /// `self − other`, exactly.
-    #[must_use]
-    pub fn sub(&self, other: &Self) -> Self {
-        self.add(&other.neg())
     }
 
     /// `self · b` for one `f64`, exactly (Scale-Expansion with zero elimination, Shewchuk Theorem 19).
@@ -272,8 +279,11 @@ impl Expansion {
         } else {
             (other, self)
         };
-        let mut acc = Expansion::default();
-        for &c in &short.comps {
+        let Some((&first, rest)) = short.comps.split_first() else {
+            return Expansion::default();
+        };
+        let mut acc = long.scale(first);
+        for &c in rest {
             acc = acc.add(&long.scale(c));
         }
         acc
