@@ -221,7 +221,10 @@ impl Expansion {
         let total = e.len() + f.len();
         let g0 = next();
         let g1 = next();
-        let mut out: SmallVec<[f64; INLINE]> = SmallVec::with_capacity(total);
+        // Built in place in the returned value (no move of the inline buffer on return).
+        let mut res = Expansion::default();
+        res.comps.reserve(total);
+        let out = &mut res.comps;
         let (mut q, mut qq) = fast_two_sum(g1, g0);
         for _ in 2..total {
             let (r, h) = fast_two_sum(next(), qq);
@@ -238,17 +241,19 @@ impl Expansion {
         if q != 0.0 {
             out.push(q);
         }
-        Expansion { comps: out }
+        res
     }
 
     /// `self · b` for one `f64`, exactly (Scale-Expansion with zero elimination, Shewchuk Theorem 19).
     #[must_use]
     pub fn scale(&self, b: f64) -> Self {
         let e = &self.comps[..];
-        let mut out: SmallVec<[f64; INLINE]> = SmallVec::with_capacity(2 * e.len());
+        let mut res = Expansion::default();
         if e.is_empty() || b == 0.0 {
-            return Expansion { comps: out };
+            return res;
         }
+        res.comps.reserve(2 * e.len());
+        let out = &mut res.comps;
         let (mut q, h) = two_product(e[0], b);
         if h != 0.0 {
             out.push(h);
@@ -268,7 +273,7 @@ impl Expansion {
         if q != 0.0 {
             out.push(q);
         }
-        Expansion { comps: out }
+        res
     }
 
     /// `self · other`, exactly: the sum of `self` scaled by each component of `other`.
