@@ -7,8 +7,9 @@
 //!   CGTA 4, 1994, §2). `O(n)`.
 //! * [`first_hit`]: the first boundary point met by the prolongation of a segment beyond a ring
 //!   vertex, by walking the triangulation along the ray. `O(k)` for `k` triangles crossed (not
-//!   linear in the worst case over all arms of a path; Amato's Step B could use shortest-path maps,
-//!   Guibas, Hershberger, Leven, Sharir & Tarjan 1987, for `O(n)` in total — not done).
+//!   linear in the worst case over all arms of a path: `Θ(n²)` in all; [`extensions`](crate::extensions)
+//!   gives every arm of a shortest-path tree in `O(n log n)`, and the separator switches to it when
+//!   its walks grow long).
 //!
 //! Every decision is the exact sign of a degree-2 polynomial of input coordinates through the kernel
 //! `K`: orientations of three ring vertices, and the cross and dot signs of `(a − w)` against the ray
@@ -250,7 +251,7 @@ fn dir_cross<K: Kernel>(w: DVec2, a: DVec2, f: DVec2) -> Sign {
 
 /// Whether the direction `w − f` points strictly into the interior angle at ring vertex `v`
 /// (from `v → v+1` counter-clockwise to `v → v−1`).
-fn enters<K: Kernel>(ring: &[DVec2], f: DVec2, v: usize) -> bool {
+pub(crate) fn enters<K: Kernel>(ring: &[DVec2], f: DVec2, v: usize) -> bool {
     let n = ring.len();
     let (w, q, p) = (ring[v], ring[(v + 1) % n], ring[(v + n - 1) % n]);
     let (cq, cp) = (dir_cross::<K>(w, q, f), dir_cross::<K>(w, p, f));
@@ -300,6 +301,19 @@ pub fn first_hit<K: Kernel>(
     from: usize,
     through: usize,
 ) -> Hit {
+    let mut unlimited = usize::MAX;
+    first_hit_within::<K>(tri, ring, from, through, &mut unlimited).unwrap_or(Hit::Immediate)
+}
+
+/// [`first_hit`] with a budget of triangle steps, decremented by the steps taken; `None` when the
+/// walk would exceed it (the budget is then spent).
+pub(crate) fn first_hit_within<K: Kernel>(
+    tri: &Triangulation,
+    ring: &[DVec2],
+    from: usize,
+    through: usize,
+    budget: &mut usize,
+) -> Option<Hit> {
     let n = ring.len();
     assert!(
         from < n && through < n,
@@ -311,11 +325,11 @@ pub fn first_hit<K: Kernel>(
         "first_hit: triangulation of another ring"
     );
     if from == through {
-        return Hit::Immediate;
+        return Some(Hit::Immediate);
     }
     let (f, w) = (ring[from], ring[through]);
     if !enters::<K>(ring, f, through) {
-        return Hit::Immediate;
+        return Some(Hit::Immediate);
     }
     let triangles = tri.triangles();
     let neighbors = tri.neighbors();
@@ -339,7 +353,7 @@ pub fn first_hit<K: Kernel>(
         );
         let cx = dir_cross::<K>(w, ring[x], f);
         if cx == Sign::Zero && K::dot_sign(w, ring[x], f, w) == Sign::Positive {
-            return Hit::Vertex(x);
+            return Some(Hit::Vertex(x));
         }
         if cx == Sign::Positive && dir_cross::<K>(w, ring[y], f) == Sign::Negative {
             found = Some((cur, (c + 1) % 3, y));
@@ -352,20 +366,24 @@ pub fn first_hit<K: Kernel>(
     }
     let Some((mut cur, mut side, mut l)) = found else {
         // Only under inconsistent signs (Fast): the direction entered but no triangle holds it.
-        return Hit::Immediate;
+        return Some(Hit::Immediate);
     };
     // The dual graph is a tree and the walk never leaves by the side it came in, so it visits each
     // triangle at most once.
     for _ in 0..triangles.len() {
+        if *budget == 0 {
+            return None;
+        }
+        *budget -= 1;
         match neighbors[cur][side] {
-            Neighbor::RingEdge(k) => return Hit::Edge(k as usize),
+            Neighbor::RingEdge(k) => return Some(Hit::Edge(k as usize)),
             Neighbor::Triangle(j) => {
                 let j = j as usize;
                 let tr = triangles[j];
                 let i = (0..3).find(|&i| tr[i] as usize == l).unwrap_or(0);
                 let z = tr[(i + 2) % 3] as usize;
                 match K::orient(f, w, ring[z]) {
-                    Orientation::Collinear => return Hit::Vertex(z),
+                    Orientation::Collinear => return Some(Hit::Vertex(z)),
                     Orientation::Clockwise => side = (i + 2) % 3,
                     Orientation::CounterClockwise => {
                         l = z;
@@ -376,7 +394,7 @@ pub fn first_hit<K: Kernel>(
             }
         }
     }
-    Hit::Immediate
+    Some(Hit::Immediate)
 }
 
 // ---------------------------------------------------------------------------------------------------

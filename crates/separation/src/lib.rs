@@ -33,7 +33,7 @@
 //! | [`closest_visible_vertices_brute`], [`separation_brute`], [`perpendicular_envelope_brute`] | brute-force twins (test references, benchmark baselines) | done |
 //! | [`separation`], [`separation_of_disjoint`], [`intersection`], [`polygon_separation_brute`] | whole simple polygons: the exact intersection check (`O(N log N)`, only when the hulls meet), the disjoint-hull route (hull features, or section 3 on both boundaries across a line through a hull edge) | done for disjoint hulls |
 //! | [`Route::Separators`] (inside [`separation`]) | section 2's separator `S(P, Q)` when the hulls meet: facing chains, the region's triangulation, the geodesic, two-sided extensions, greedy pruning, report 001's subchains, then `σ(P_i, Q_i)` | done for the non-containing case, the pinched channel and the containing case (two passes over the annulus cut open, at its top and at its bottom), checked against properties (i)–(iv), (v) for vertices, monotone cuts and Lemma 1 (for every vertex–vertex sight on small cases) by an `O(N²)` checker; subproblems whose line touches both chains are scanned (`O(|P_i||Q_i|)`) |
-//! | [`triangulate`], [`shortest_path`], [`first_hit`] | exact triangulation of a simple polygon with collinear vertices (`O(n log n)`), geodesics by the funnel, ray-shooting arms | done (`docs/algorithms/triangulation.md`) |
+//! | [`triangulate`], [`shortest_path`], [`first_hit`], [`extensions`] | exact triangulation of a simple polygon with collinear vertices (`O(n log n)`), geodesics by the funnel, ray-shooting arms (one walk each, or every arm of a shortest-path tree in `O(n log n)`) | done (`docs/algorithms/triangulation.md`) |
 //! | [`point_to_polygon`], [`segment_to_polygon`] | a point or a segment against a simple polygon, `O(n)` | done |
 //! | a linear-time envelope, chains with gaps, lines touched by both chains | — | **not done**: see `docs/algorithms/separation.md` and `docs/algorithms/separation-polygons.md` |
 //!
@@ -78,6 +78,7 @@ mod result;
 mod separator;
 mod sigma;
 mod simple_distance;
+mod spm;
 mod triangulate;
 mod wedge;
 
@@ -97,6 +98,7 @@ pub use polygon::{
 pub use result::{ChainSeparation, ClosestPair, Cvv, CvvStats, SeparationStats};
 pub use sigma::separation_of_chains;
 pub use simple_distance::{BoundaryPoint, PointToPolygon, point_to_polygon, segment_to_polygon};
+pub use spm::{Extensions, extensions};
 pub use triangulate::{
     Neighbor, Triangulation, TriangulationError, triangulate, triangulate_brute,
 };

@@ -8,8 +8,8 @@ use polydist_predicates::{
     reset_predicate_counts,
 };
 use polydist_separation::{
-    Hit, Triangulation, TriangulationError, first_hit, first_hit_brute, segment_in_polygon,
-    shortest_path, shortest_path_brute, triangulate, triangulate_brute,
+    Hit, Triangulation, TriangulationError, extensions, first_hit, first_hit_brute,
+    segment_in_polygon, shortest_path, shortest_path_brute, triangulate, triangulate_brute,
 };
 use proptest::prelude::*;
 
@@ -616,6 +616,9 @@ proptest! {
         full_check::<Robust>("prop-brute", &ring, &brute);
         check_paths("prop", &ring, &tri, which == 0);
         check_hits("prop", &ring, &tri);
+        for s in [0, ring.len() / 3, ring.len() - 1] {
+            check_extensions::<Robust>("prop", &ring, &tri, s);
+        }
         // The arms of geodesic segments, as the separator uses them.
         let m = ring.len();
         let path = shortest_path::<Robust>(&tri, &ring, 0, m / 2);
@@ -711,4 +714,55 @@ fn junk_rings_never_panic() {
     }
     println!("junk rings: {ok} triangulated, {err} refused");
     assert!(ok > 0 && err > 0, "ok {ok}, err {err}");
+}
+
+/// The shortest-path tree's extensions against one walk per arm: from every source, every vertex
+/// whose path bends there gets the hit `first_hit` finds for the ray from its parent, and the
+/// parent is the path's last bend (or a vertex on the same ray).
+fn check_extensions<K: Kernel>(name: &str, ring: &[DVec2], tri: &Triangulation, s: usize) {
+    let ext = extensions::<K>(tri, ring, s);
+    for v in 0..ring.len() {
+        if v == s {
+            assert_eq!(ext.parent[v], None, "{name}");
+            continue;
+        }
+        let path = shortest_path::<K>(tri, ring, s, v);
+        let prev = path[path.len() - 2];
+        let walk = first_hit::<K>(tri, ring, prev, v);
+        let parent = ext.parent[v].unwrap_or_else(|| panic!("{name}: no parent for {v}"));
+        assert_eq!(
+            K::orient(ring[parent], ring[prev], ring[v]),
+            Orientation::Collinear,
+            "{name}: s={s} v={v}: parent {parent}, path {path:?}"
+        );
+        match ext.hit[v] {
+            Some(h) => assert_eq!(h, walk, "{name}: s={s} v={v} parent {parent} path {path:?}"),
+            None => assert_eq!(
+                walk,
+                Hit::Immediate,
+                "{name}: s={s} v={v}: missing {walk:?}"
+            ),
+        }
+    }
+}
+
+#[test]
+fn extensions_match_one_walk_per_arm() {
+    let mut rng = SplitMix64::new(0x5e7);
+    for n in [4usize, 9, 16, 30, 60] {
+        for (name, ring) in family(&mut rng, n) {
+            let tri = triangulate::<Robust>(&ring).unwrap();
+            let sources: Vec<usize> = if ring.len() <= 40 {
+                (0..ring.len()).collect()
+            } else {
+                (0..8).map(|_| rng.index(ring.len())).collect()
+            };
+            for s in sources {
+                check_extensions::<Robust>(&format!("{name} n={n}"), &ring, &tri, s);
+            }
+            if ring.len() <= 20 {
+                check_extensions::<Exact>(&format!("{name} n={n} exact"), &ring, &tri, 0);
+            }
+        }
+    }
 }
