@@ -505,6 +505,38 @@ fn geodesic_predicate_calls_are_linear() {
     }
 }
 
+/// `O(n log n)` extensions by counting: predicate calls per `n log2 n` stay below a constant.
+#[test]
+fn extension_predicate_calls_are_n_log_n() {
+    const PER_N_LOG_N: f64 = 2.0; // measured: at most 0.89
+    let mut rng = SplitMix64::new(9);
+    let mut worst: f64 = 0.0;
+    for n in [64usize, 1024, 16384] {
+        for (name, ring) in [
+            ("comb", comb(n / 4, 5, 1)),
+            ("star", star(&mut rng, n, n / 4)),
+            ("histogram", histogram(&mut rng, n / 3, false)),
+            ("spiral", spiral(8, (n / 16) as u32)),
+        ] {
+            let m = ring.len() as f64;
+            let tri = triangulate::<Robust>(&ring).unwrap();
+            for s in [0, ring.len() / 2] {
+                reset_predicate_counts();
+                let ext = extensions::<Counted<Robust>>(&tri, &ring, s);
+                let calls = predicate_counts().total() as f64;
+                assert!(ext.parent.iter().filter(|p| p.is_none()).count() == 1);
+                let per = calls / (m * m.log2());
+                worst = worst.max(per);
+                assert!(
+                    per <= PER_N_LOG_N,
+                    "{name} n={m} s={s}: {calls} calls, {per:.2} per n log2 n"
+                );
+            }
+        }
+    }
+    println!("worst {worst:.3} calls per n log2 n");
+}
+
 fn length(ring: &[DVec2], path: &[usize]) -> f64 {
     path.windows(2)
         .map(|w| (ring[w[0]] - ring[w[1]]).length())
