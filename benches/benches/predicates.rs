@@ -1,5 +1,5 @@
 //! What accuracy costs in time, predicate by predicate: Fast, Robust and Exact kernels on random,
-//! near-degenerate and coarse-grid (exactly tied) inputs, as a dependent chain (each sign picks the next input, so latency counts) and
+//! near-degenerate and coarse-grid (exactly tied, in eighths and in tenths) inputs, as a dependent chain (each sign picks the next input, so latency counts) and
 //! as throughput (independent calls). `robust::orient2d` (Shewchuk's predicates, not inlined) is the
 //! baseline for orientation.
 
@@ -49,6 +49,15 @@ fn grid_points(seed: u64) -> Vec<DVec2> {
     (0..N + 16).map(|_| DVec2::new(at(), at())).collect()
 }
 
+/// The same grid in tenths (`1000 + k/10`): the ties are as frequent, but the coordinates are not
+/// dyadic, so their products round and the error-free stage declines: the ties fall to expansions.
+/// Decimal coordinates are what GIS data looks like.
+fn decimal_points(seed: u64) -> Vec<DVec2> {
+    let mut rng = SplitMix64::new(seed);
+    let mut at = || 1000.0 + rng.below(8) as f64 / 10.0;
+    (0..N + 16).map(|_| DVec2::new(at(), at())).collect()
+}
+
 /// Each result decides which point the next call uses: the latency of the whole predicate counts.
 fn chain(pts: &[DVec2], f: impl Fn(DVec2, DVec2, DVec2, DVec2) -> i8) -> usize {
     let mut k = 0usize;
@@ -80,6 +89,7 @@ macro_rules! predicate_group {
             ("random", random_points(1)),
             ("degenerate", degenerate_points(2)),
             ("grid", grid_points(3)),
+            ("decimal", decimal_points(4)),
         ] {
             let mut g = $c.benchmark_group(format!("predicates/{}/{}", $name, input));
             g.throughput(Throughput::Elements(N as u64));
