@@ -311,9 +311,19 @@ impl EdgePart {
             v1: self.b,
             neg: false,
         });
-        let end = if e.cmp::<K>(&foot, &self.bot) == Ordering::Less {
+        // The foot against an edge end is one dot sign (the foot form's drop g(a) − g(b) = −|b − a|²
+        // is negative, so `Edge::cmp` would spend a test on it).
+        let below = |t: &Param| match t {
+            Param::Start => K::dot_sign(self.a, q, self.a, self.b) == Sign::Negative,
+            _ => e.cmp::<K>(&foot, t) == Ordering::Less,
+        };
+        let above = |t: &Param| match t {
+            Param::End => K::dot_sign(self.b, q, self.a, self.b) == Sign::Positive,
+            _ => e.cmp::<K>(&foot, t) == Ordering::Greater,
+        };
+        let end = if below(&self.bot) {
             self.bot
-        } else if e.cmp::<K>(&foot, &self.top) == Ordering::Greater {
+        } else if above(&self.top) {
             self.top
         } else {
             return Val::Line;
