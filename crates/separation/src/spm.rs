@@ -96,6 +96,9 @@ pub fn extensions<K: Kernel>(tri: &Triangulation, ring: &[DVec2], s: usize) -> E
     let mut buf = vec![0u32; 2 * n + 8];
     let mut undo: Vec<(usize, u32)> = Vec::new();
     let mut stack: Vec<Task> = Vec::new();
+    // Each triangle is entered once (the dual graph is a tree); the flag keeps every loop finite and
+    // every index in range even on a triangulation built from inconsistent (Fast) signs.
+    let mut entered = vec![false; triangles.len()];
     let pt = |v: u32| ring[v as usize];
     let orient = |a: u32, b: u32, c: u32| K::orient(pt(a), pt(b), pt(c));
     // `c`'s ray (from `from` through `c`) enters the interior at `c` and passes through `z` beyond.
@@ -193,6 +196,9 @@ pub fn extensions<K: Kernel>(tri: &Triangulation, ring: &[DVec2], s: usize) -> E
                     hi,
                     ap,
                 } => {
+                    if std::mem::replace(&mut entered[t], true) {
+                        continue;
+                    }
                     let tr = triangles[t];
                     let w = tr[(side + 2) % 3];
                     // Left chain, outward from the apex: the path to w bends left at buf[p] while

@@ -422,6 +422,7 @@ fn fast_kernel_never_panics() {
         if let Ok(t) = triangulate::<Fast>(&tiny) {
             let _ = shortest_path::<Fast>(&t, &tiny, 0, n / 2);
             let _ = first_hit::<Fast>(&t, &tiny, 0, n / 2);
+            let _ = extensions::<Fast>(&t, &tiny, n / 3);
         }
     }
 }
