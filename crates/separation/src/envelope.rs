@@ -40,17 +40,17 @@ enum At {
     Edge(usize),
 }
 
-/// The envelope of a sub-chain: breakpoints (vertices giving their heights) strictly increasing in
-/// height, the nearest point at each, and the nearest edge (or a gap) in each open interval
-/// between consecutive breakpoints.
-#[derive(Clone, Debug, Default)]
-struct Env {
-    ys: Vec<usize>,
-    at: Vec<At>,
-    gaps: Vec<Option<usize>>,
+/// The envelope of a sub-chain, borrowed from a [`Level`]: breakpoints (vertices giving their
+/// heights) strictly increasing in height, the nearest point at each, and `gaps[k]`, the nearest
+/// edge (or a gap) in the open interval just above breakpoint `k` (`None` above the last).
+#[derive(Clone, Copy)]
+struct Env<'a> {
+    ys: &'a [usize],
+    at: &'a [At],
+    gaps: &'a [Option<usize>],
 }
 
-impl Env {
+impl Env<'_> {
     /// The edge over the open interval just below breakpoint `i` (`None` below the first and above
     /// the last).
     fn open(&self, i: usize) -> Option<usize> {
@@ -59,6 +59,61 @@ impl Env {
         } else {
             None
         }
+    }
+}
+
+/// The envelopes of consecutive sub-chains stored back to back in three flat arrays (one round of
+/// the divide and conquer): envelope `s` is the range `segs[s]` of breakpoints. Two levels are
+/// reused in turn, so a round allocates nothing once the arrays have grown.
+#[derive(Default)]
+struct Level {
+    ys: Vec<usize>,
+    at: Vec<At>,
+    gaps: Vec<Option<usize>>,
+    segs: Vec<(usize, usize)>,
+}
+
+impl Level {
+    fn with_capacity(n: usize) -> Level {
+        Level {
+            ys: Vec::with_capacity(n),
+            at: Vec::with_capacity(n),
+            gaps: Vec::with_capacity(n),
+            segs: Vec::new(),
+        }
+    }
+
+    fn clear(&mut self) {
+        self.ys.clear();
+        self.at.clear();
+        self.gaps.clear();
+        self.segs.clear();
+    }
+
+    fn env(&self, s: usize) -> Env<'_> {
+        let (lo, hi) = self.segs[s];
+        Env {
+            ys: &self.ys[lo..hi],
+            at: &self.at[lo..hi],
+            gaps: &self.gaps[lo..hi],
+        }
+    }
+
+    fn push(&mut self, y: usize, at: At, gap: Option<usize>) {
+        self.ys.push(y);
+        self.at.push(at);
+        self.gaps.push(gap);
+    }
+
+    fn extend(&mut self, e: Env<'_>) {
+        self.ys.extend_from_slice(e.ys);
+        self.at.extend_from_slice(e.at);
+        self.gaps.extend_from_slice(e.gaps);
+    }
+
+    /// Closes the envelope begun at breakpoint `start`.
+    fn close(&mut self, start: usize) {
+        self.segs.push((start, self.ys.len()));
     }
 }
 
@@ -157,14 +212,14 @@ fn nearer<K: Kernel>(c: &Ctx<'_>, x: At, y: At) -> Result<At, Bad> {
     Ok(if o == Ordering::Greater { y } else { x })
 }
 
-/// The envelope of a single edge.
-fn leaf<K: Kernel>(c: &Ctx<'_>, e: usize, ends: (usize, usize)) -> Env {
+/// Appends the envelope of a single edge.
+fn leaf<K: Kernel>(c: &Ctx<'_>, e: usize, ends: (usize, usize), out: &mut Level) {
+    let start = out.ys.len();
     match c.lohi[e] {
-        Some((a, b)) => Env {
-            ys: vec![a, b],
-            at: vec![At::Vertex(a), At::Vertex(b)],
-            gaps: vec![Some(e)],
-        },
+        Some((a, b)) => {
+            out.push(a, At::Vertex(a), Some(e));
+            out.push(b, At::Vertex(b), None);
+        }
         None => {
             // Perpendicular to the line: only the nearer end is visible.
             let (u, w) = ends;
@@ -173,55 +228,54 @@ fn leaf<K: Kernel>(c: &Ctx<'_>, e: usize, ends: (usize, usize)) -> Env {
             } else {
                 u
             };
-            Env {
-                ys: vec![k],
-                at: vec![At::Vertex(k)],
-                gaps: Vec::new(),
-            }
+            out.push(k, At::Vertex(k), None);
         }
     }
+    out.close(start);
 }
 
-/// `lo` then `hi`, whose height ranges meet at most at `lo`'s top = `hi`'s bottom.
-fn concat<K: Kernel>(c: &Ctx<'_>, mut lo: Env, hi: Env) -> Result<Env, Bad> {
+/// Appends `lo` then `hi`, whose height ranges meet at most at `lo`'s top = `hi`'s bottom.
+fn concat<K: Kernel>(c: &Ctx<'_>, lo: Env<'_>, hi: Env<'_>, out: &mut Level) -> Result<(), Bad> {
+    out.extend(lo);
     let (Some(&top), Some(&bot)) = (lo.ys.last(), hi.ys.first()) else {
-        return Ok(if lo.ys.is_empty() { hi } else { lo });
+        out.extend(hi);
+        return Ok(());
     };
-    let mut hi_at = hi.at.into_iter();
-    let mut hi_ys = hi.ys.into_iter();
     if c.frame.cmp_height::<K>(c.v[top], c.v[bot]) == Ordering::Equal {
-        let (x, y) = (lo.at.pop(), hi_at.next());
-        hi_ys.next();
-        if let (Some(x), Some(y)) = (x, y) {
-            lo.at.push(nearer::<K>(c, x, y)?);
-        }
+        // One breakpoint at the common height; `lo`'s last gap (`None`) gives way to `hi`'s.
+        let last = out.at.len() - 1;
+        out.at[last] = nearer::<K>(c, lo.at[lo.at.len() - 1], hi.at[0])?;
+        out.gaps.pop();
+        out.ys.extend_from_slice(&hi.ys[1..]);
+        out.at.extend_from_slice(&hi.at[1..]);
+        out.gaps.extend_from_slice(hi.gaps);
     } else {
-        lo.gaps.push(None);
+        // `lo`'s last gap (`None`) is the empty interval between the two.
+        out.extend(hi);
     }
-    lo.ys.extend(hi_ys);
-    lo.at.extend(hi_at);
-    lo.gaps.extend(hi.gaps);
-    Ok(lo)
+    Ok(())
 }
 
-/// The envelope of the union of two sub-chains. `O(|a| + |b|)` tests of degree 2.
-fn merge<K: Kernel>(c: &Ctx<'_>, a: Env, b: Env) -> Result<Env, Bad> {
+/// Appends the envelope of the union of two sub-chains. `O(|a| + |b|)` tests of degree 2.
+fn merge<K: Kernel>(c: &Ctx<'_>, a: Env<'_>, b: Env<'_>, out: &mut Level) -> Result<(), Bad> {
+    let start = out.ys.len();
     let (Some(&a_top), Some(&b_top)) = (a.ys.last(), b.ys.last()) else {
-        return Ok(if a.ys.is_empty() { b } else { a });
+        out.extend(if a.ys.is_empty() { b } else { a });
+        out.close(start);
+        return Ok(());
     };
     let (a_bot, b_bot) = (a.ys[0], b.ys[0]);
     if c.frame.cmp_height::<K>(c.v[a_top], c.v[b_bot]) != Ordering::Greater {
-        return concat::<K>(c, a, b);
+        concat::<K>(c, a, b, out)?;
+        out.close(start);
+        return Ok(());
     }
     if c.frame.cmp_height::<K>(c.v[b_top], c.v[a_bot]) != Ordering::Greater {
-        return concat::<K>(c, b, a);
+        concat::<K>(c, b, a, out)?;
+        out.close(start);
+        return Ok(());
     }
     let (na, nb) = (a.ys.len(), b.ys.len());
-    let mut out = Env {
-        ys: Vec::with_capacity(na + nb),
-        at: Vec::with_capacity(na + nb),
-        gaps: Vec::with_capacity(na + nb),
-    };
     // The last pair of edges compared and the result: the order of two disjoint edges is the same
     // over every interval they both span.
     let mut last: Option<(usize, usize, Ordering)> = None;
@@ -260,10 +314,8 @@ fn merge<K: Kernel>(c: &Ctx<'_>, a: Env, b: Env) -> Result<Env, Bad> {
                 (y, p)
             }
         };
-        out.ys.push(y);
-        out.at.push(pt);
-        if i < na || j < nb {
-            let g = match (a.open(i), b.open(j)) {
+        let g = if i < na || j < nb {
+            match (a.open(i), b.open(j)) {
                 (Some(e), Some(f)) => {
                     let o = match last {
                         Some((x, z, o)) if (x, z) == (e, f) => o,
@@ -277,35 +329,39 @@ fn merge<K: Kernel>(c: &Ctx<'_>, a: Env, b: Env) -> Result<Env, Bad> {
                 }
                 (e, None) => e,
                 (None, f) => f,
-            };
-            out.gaps.push(g);
-        }
+            }
+        } else {
+            None
+        };
+        out.push(y, pt, g);
     }
-    Ok(coalesce(out))
+    coalesce(out, start);
+    out.close(start);
+    Ok(())
 }
 
-/// Drops the breakpoints at interior points of an edge that is nearest on both sides (they are not
-/// breakpoints of the envelope). No predicate.
-fn coalesce(env: Env) -> Env {
-    let n = env.ys.len();
-    let mut out = Env {
-        ys: Vec::with_capacity(n),
-        at: Vec::with_capacity(n),
-        gaps: Vec::with_capacity(n),
-    };
+/// Drops, from the breakpoints `start..` of `out`, those at interior points of an edge that is
+/// nearest on both sides (they are not breakpoints of the envelope), in place. No predicate.
+fn coalesce(out: &mut Level, start: usize) {
+    let n = out.ys.len() - start;
+    let mut w = start;
     for k in 0..n {
-        if let At::Edge(e) = env.at[k] {
-            if k > 0 && k + 1 < n && env.gaps[k - 1] == Some(e) && env.gaps[k] == Some(e) {
-                continue; // the gap below (already pushed) continues above
+        let r = start + k;
+        if let At::Edge(e) = out.at[r] {
+            // `gaps[r - 1]` is still the original: writes so far went below `w ≤ r`, or to `r - 1`
+            // itself while nothing was dropped.
+            if k > 0 && k + 1 < n && out.gaps[r - 1] == Some(e) && out.gaps[r] == Some(e) {
+                continue; // the gap below (already kept) continues above
             }
         }
-        out.ys.push(env.ys[k]);
-        out.at.push(env.at[k]);
-        if k + 1 < n {
-            out.gaps.push(env.gaps[k]);
-        }
+        out.ys[w] = out.ys[r];
+        out.at[w] = out.at[r];
+        out.gaps[w] = out.gaps[r];
+        w += 1;
     }
-    out
+    out.ys.truncate(w);
+    out.at.truncate(w);
+    out.gaps.truncate(w);
 }
 
 /// A chain with repeated consecutive vertices dropped and a closing repeat removed.
@@ -356,7 +412,7 @@ fn clean(chain: &[DVec2], which: Chain) -> Result<Clean, SeparationError> {
 fn to_prepared<K: Kernel>(
     c: &Ctx<'_>,
     cl: &Clean,
-    env: &Env,
+    env: Env<'_>,
     which: Chain,
 ) -> Result<Prepared, SeparationError> {
     let mut out = Prepared::default();
@@ -370,7 +426,9 @@ fn to_prepared<K: Kernel>(
             At::Edge(_) => return Err(c.bad(env.ys[k], which)),
         }
     }
-    for (k, g) in env.gaps.iter().enumerate() {
+    // The last breakpoint's gap (`None`) is not an interval.
+    let gaps = &env.gaps[..env.ys.len().saturating_sub(1)];
+    for (k, g) in gaps.iter().enumerate() {
         let Some(e) = *g else {
             return Err(c.bad(env.ys[k], which));
         };
@@ -435,33 +493,42 @@ pub(crate) fn prepare<K: Kernel>(
         idx: &cl.idx,
         lohi: &lohi,
     };
-    let mut level: Vec<Env> = if cl.edges.is_empty() {
-        vec![Env {
-            ys: vec![0],
-            at: vec![At::Vertex(0)],
-            gaps: Vec::new(),
-        }]
+    let mut level = Level::with_capacity(2 * cl.edges.len().max(1));
+    if cl.edges.is_empty() {
+        level.push(0, At::Vertex(0), None);
+        level.close(0);
     } else {
-        cl.edges
-            .iter()
-            .enumerate()
-            .map(|(e, &(u, w, _))| leaf::<K>(&c, e, (u, w)))
-            .collect()
-    };
-    // log2(n) rounds, each halving the list.
-    while level.len() > 1 {
-        let mut next = Vec::with_capacity(level.len().div_ceil(2));
-        let mut it = level.into_iter();
-        while let Some(x) = it.next() {
-            match it.next() {
-                Some(y) => next.push(merge::<K>(&c, x, y).map_err(|w| c.bad(w, which))?),
-                None => next.push(x),
+        for (e, &(u, w, _)) in cl.edges.iter().enumerate() {
+            leaf::<K>(&c, e, (u, w), &mut level);
+        }
+    }
+    // log2(n) rounds, each halving the number of envelopes.
+    let mut next = Level::with_capacity(level.ys.len());
+    while level.segs.len() > 1 {
+        next.clear();
+        let m = level.segs.len();
+        for s in (0..m).step_by(2) {
+            if s + 1 < m {
+                merge::<K>(&c, level.env(s), level.env(s + 1), &mut next)
+                    .map_err(|w| c.bad(w, which))?;
+            } else {
+                let start = next.ys.len();
+                next.extend(level.env(s));
+                next.close(start);
             }
         }
-        level = next;
+        core::mem::swap(&mut level, &mut next);
     }
-    let env = level.pop().unwrap_or_default();
-    to_prepared::<K>(&c, &cl, &env, which)
+    let env = if level.segs.is_empty() {
+        Env {
+            ys: &[],
+            at: &[],
+            gaps: &[],
+        }
+    } else {
+        level.env(0)
+    };
+    to_prepared::<K>(&c, &cl, env, which)
 }
 
 /// The `O(n²)` twin of [`prepare`]: for every distinct vertex height, the nearest point of the
@@ -505,7 +572,7 @@ pub(crate) fn prepare_brute<K: Kernel>(
         })
     };
     let bad = |w: Bad| c.bad(w, which);
-    let mut env = Env::default();
+    let mut env = Level::with_capacity(hs.len());
     for (k, &h) in hs.iter().enumerate() {
         let mut best: Option<At> = None;
         for w in 0..m {
@@ -524,9 +591,8 @@ pub(crate) fn prepare_brute<K: Kernel>(
                 });
             }
         }
-        env.ys.push(h);
-        env.at.push(best.unwrap_or(At::Vertex(h)));
-        if k + 1 < hs.len() {
+        let at = best.unwrap_or(At::Vertex(h));
+        let gap = if k + 1 < hs.len() {
             // Edges spanning the slab above h: bottom at or below h, top above h.
             let mut g: Option<usize> = None;
             for (e, ends) in lohi.iter().enumerate() {
@@ -546,11 +612,15 @@ pub(crate) fn prepare_brute<K: Kernel>(
                     });
                 }
             }
-            env.gaps.push(g);
-        }
+            g
+        } else {
+            None
+        };
+        env.push(h, at, gap);
     }
-    let env = coalesce(env);
-    to_prepared::<K>(&c, &cl, &env, which)
+    coalesce(&mut env, 0);
+    env.close(0);
+    to_prepared::<K>(&c, &cl, env.env(0), which)
 }
 
 /// The perpendicular-visibility envelope of one chain (Lemma 2), in the caller's indices: what
