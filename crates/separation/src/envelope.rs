@@ -40,80 +40,74 @@ enum At {
     Edge(usize),
 }
 
-/// The envelope of a sub-chain, borrowed from a [`Level`]: breakpoints (vertices giving their
-/// heights) strictly increasing in height, the nearest point at each, and `gaps[k]`, the nearest
-/// edge (or a gap) in the open interval just above breakpoint `k` (`None` above the last).
+/// A breakpoint of an envelope: the vertex `y` giving its height, the nearest point `at` there, and
+/// the nearest edge (or a gap) `gap` in the open interval just above it (`None` above the last).
+#[derive(Clone, Copy, Debug)]
+struct Bp {
+    y: usize,
+    at: At,
+    gap: Option<usize>,
+}
+
+/// The envelope of a sub-chain, borrowed from a [`Level`]: breakpoints strictly increasing in
+/// height.
 #[derive(Clone, Copy)]
 struct Env<'a> {
-    ys: &'a [usize],
-    at: &'a [At],
-    gaps: &'a [Option<usize>],
+    bps: &'a [Bp],
 }
 
 impl Env<'_> {
     /// The edge over the open interval just below breakpoint `i` (`None` below the first and above
     /// the last).
+    #[inline]
     fn open(&self, i: usize) -> Option<usize> {
-        if i > 0 && i < self.ys.len() {
-            self.gaps[i - 1]
+        if i > 0 && i < self.bps.len() {
+            self.bps[i - 1].gap
         } else {
             None
         }
     }
 }
 
-/// The envelopes of consecutive sub-chains stored back to back in three flat arrays (one round of
-/// the divide and conquer): envelope `s` is the range `segs[s]` of breakpoints. Two levels are
-/// reused in turn, so a round allocates nothing once the arrays have grown.
+/// The envelopes of consecutive sub-chains stored back to back in one flat array (one round of the
+/// divide and conquer): envelope `s` is the range `segs[s]` of breakpoints. Two levels are reused in
+/// turn, so a round allocates nothing once the arrays have grown.
 #[derive(Default)]
 struct Level {
-    ys: Vec<usize>,
-    at: Vec<At>,
-    gaps: Vec<Option<usize>>,
+    bps: Vec<Bp>,
     segs: Vec<(usize, usize)>,
 }
 
 impl Level {
     fn with_capacity(n: usize) -> Level {
         Level {
-            ys: Vec::with_capacity(n),
-            at: Vec::with_capacity(n),
-            gaps: Vec::with_capacity(n),
+            bps: Vec::with_capacity(n),
             segs: Vec::new(),
         }
     }
 
     fn clear(&mut self) {
-        self.ys.clear();
-        self.at.clear();
-        self.gaps.clear();
+        self.bps.clear();
         self.segs.clear();
     }
 
+    #[inline]
     fn env(&self, s: usize) -> Env<'_> {
         let (lo, hi) = self.segs[s];
         Env {
-            ys: &self.ys[lo..hi],
-            at: &self.at[lo..hi],
-            gaps: &self.gaps[lo..hi],
+            bps: &self.bps[lo..hi],
         }
     }
 
+    #[inline]
     fn push(&mut self, y: usize, at: At, gap: Option<usize>) {
-        self.ys.push(y);
-        self.at.push(at);
-        self.gaps.push(gap);
-    }
-
-    fn extend(&mut self, e: Env<'_>) {
-        self.ys.extend_from_slice(e.ys);
-        self.at.extend_from_slice(e.at);
-        self.gaps.extend_from_slice(e.gaps);
+        self.bps.push(Bp { y, at, gap });
     }
 
     /// Closes the envelope begun at breakpoint `start`.
+    #[inline]
     fn close(&mut self, start: usize) {
-        self.segs.push((start, self.ys.len()));
+        self.segs.push((start, self.bps.len()));
     }
 }
 
@@ -214,7 +208,7 @@ fn nearer<K: Kernel>(c: &Ctx<'_>, x: At, y: At) -> Result<At, Bad> {
 
 /// Appends the envelope of a single edge.
 fn leaf<K: Kernel>(c: &Ctx<'_>, e: usize, ends: (usize, usize), out: &mut Level) {
-    let start = out.ys.len();
+    let start = out.bps.len();
     match c.lohi[e] {
         Some((a, b)) => {
             out.push(a, At::Vertex(a), Some(e));
@@ -236,35 +230,36 @@ fn leaf<K: Kernel>(c: &Ctx<'_>, e: usize, ends: (usize, usize), out: &mut Level)
 
 /// Appends `lo` then `hi`, whose height ranges meet at most at `lo`'s top = `hi`'s bottom.
 fn concat<K: Kernel>(c: &Ctx<'_>, lo: Env<'_>, hi: Env<'_>, out: &mut Level) -> Result<(), Bad> {
-    out.extend(lo);
-    let (Some(&top), Some(&bot)) = (lo.ys.last(), hi.ys.first()) else {
-        out.extend(hi);
+    out.bps.extend_from_slice(lo.bps);
+    let (Some(top), Some(bot)) = (lo.bps.last(), hi.bps.first()) else {
+        out.bps.extend_from_slice(hi.bps);
         return Ok(());
     };
-    if c.frame.cmp_height::<K>(c.v[top], c.v[bot]) == Ordering::Equal {
-        // One breakpoint at the common height; `lo`'s last gap (`None`) gives way to `hi`'s.
-        let last = out.at.len() - 1;
-        out.at[last] = nearer::<K>(c, lo.at[lo.at.len() - 1], hi.at[0])?;
-        out.gaps.pop();
-        out.ys.extend_from_slice(&hi.ys[1..]);
-        out.at.extend_from_slice(&hi.at[1..]);
-        out.gaps.extend_from_slice(hi.gaps);
+    if c.frame.cmp_height::<K>(c.v[top.y], c.v[bot.y]) == Ordering::Equal {
+        // One breakpoint at the common height, with `hi`'s gap above (`lo`'s last is `None`).
+        let at = nearer::<K>(c, top.at, bot.at)?;
+        if let Some(last) = out.bps.last_mut() {
+            last.at = at;
+            last.gap = bot.gap;
+        }
+        out.bps.extend_from_slice(&hi.bps[1..]);
     } else {
         // `lo`'s last gap (`None`) is the empty interval between the two.
-        out.extend(hi);
+        out.bps.extend_from_slice(hi.bps);
     }
     Ok(())
 }
 
 /// Appends the envelope of the union of two sub-chains. `O(|a| + |b|)` tests of degree 2.
 fn merge<K: Kernel>(c: &Ctx<'_>, a: Env<'_>, b: Env<'_>, out: &mut Level) -> Result<(), Bad> {
-    let start = out.ys.len();
-    let (Some(&a_top), Some(&b_top)) = (a.ys.last(), b.ys.last()) else {
-        out.extend(if a.ys.is_empty() { b } else { a });
+    let start = out.bps.len();
+    let (Some(a_top), Some(b_top)) = (a.bps.last(), b.bps.last()) else {
+        out.bps
+            .extend_from_slice(if a.bps.is_empty() { b.bps } else { a.bps });
         out.close(start);
         return Ok(());
     };
-    let (a_bot, b_bot) = (a.ys[0], b.ys[0]);
+    let (a_top, b_top, a_bot, b_bot) = (a_top.y, b_top.y, a.bps[0].y, b.bps[0].y);
     if c.frame.cmp_height::<K>(c.v[a_top], c.v[b_bot]) != Ordering::Greater {
         concat::<K>(c, a, b, out)?;
         out.close(start);
@@ -275,7 +270,7 @@ fn merge<K: Kernel>(c: &Ctx<'_>, a: Env<'_>, b: Env<'_>, out: &mut Level) -> Res
         out.close(start);
         return Ok(());
     }
-    let (na, nb) = (a.ys.len(), b.ys.len());
+    let (na, nb) = (a.bps.len(), b.bps.len());
     // The last pair of edges compared and the result: the order of two disjoint edges is the same
     // over every interval they both span.
     let mut last: Option<(usize, usize, Ordering)> = None;
@@ -287,11 +282,11 @@ fn merge<K: Kernel>(c: &Ctx<'_>, a: Env<'_>, b: Env<'_>, out: &mut Level) -> Res
         } else if j == nb {
             Ordering::Less
         } else {
-            c.frame.cmp_height::<K>(c.v[a.ys[i]], c.v[b.ys[j]])
+            c.frame.cmp_height::<K>(c.v[a.bps[i].y], c.v[b.bps[j].y])
         };
         let (y, pt) = match o {
             Ordering::Less => {
-                let (y, p) = (a.ys[i], a.at[i]);
+                let (y, p) = (a.bps[i].y, a.bps[i].at);
                 i += 1;
                 match b.open(j) {
                     Some(e) => (y, nearer::<K>(c, p, At::Edge(e))?),
@@ -299,7 +294,7 @@ fn merge<K: Kernel>(c: &Ctx<'_>, a: Env<'_>, b: Env<'_>, out: &mut Level) -> Res
                 }
             }
             Ordering::Greater => {
-                let (y, p) = (b.ys[j], b.at[j]);
+                let (y, p) = (b.bps[j].y, b.bps[j].at);
                 j += 1;
                 match a.open(i) {
                     Some(e) => (y, nearer::<K>(c, At::Edge(e), p)?),
@@ -307,8 +302,8 @@ fn merge<K: Kernel>(c: &Ctx<'_>, a: Env<'_>, b: Env<'_>, out: &mut Level) -> Res
                 }
             }
             Ordering::Equal => {
-                let y = a.ys[i];
-                let p = nearer::<K>(c, a.at[i], b.at[j])?;
+                let y = a.bps[i].y;
+                let p = nearer::<K>(c, a.bps[i].at, b.bps[j].at)?;
                 i += 1;
                 j += 1;
                 (y, p)
@@ -343,25 +338,22 @@ fn merge<K: Kernel>(c: &Ctx<'_>, a: Env<'_>, b: Env<'_>, out: &mut Level) -> Res
 /// Drops, from the breakpoints `start..` of `out`, those at interior points of an edge that is
 /// nearest on both sides (they are not breakpoints of the envelope), in place. No predicate.
 fn coalesce(out: &mut Level, start: usize) {
-    let n = out.ys.len() - start;
+    let bps = &mut out.bps;
+    let n = bps.len() - start;
     let mut w = start;
     for k in 0..n {
         let r = start + k;
-        if let At::Edge(e) = out.at[r] {
-            // `gaps[r - 1]` is still the original: writes so far went below `w ≤ r`, or to `r - 1`
+        if let At::Edge(e) = bps[r].at {
+            // `bps[r - 1]` is still the original: writes so far went below `w ≤ r`, or to `r - 1`
             // itself while nothing was dropped.
-            if k > 0 && k + 1 < n && out.gaps[r - 1] == Some(e) && out.gaps[r] == Some(e) {
+            if k > 0 && k + 1 < n && bps[r - 1].gap == Some(e) && bps[r].gap == Some(e) {
                 continue; // the gap below (already kept) continues above
             }
         }
-        out.ys[w] = out.ys[r];
-        out.at[w] = out.at[r];
-        out.gaps[w] = out.gaps[r];
+        bps[w] = bps[r];
         w += 1;
     }
-    out.ys.truncate(w);
-    out.at.truncate(w);
-    out.gaps.truncate(w);
+    bps.truncate(w);
 }
 
 /// A chain with repeated consecutive vertices dropped and a closing repeat removed.
@@ -415,25 +407,29 @@ fn to_prepared<K: Kernel>(
     env: Env<'_>,
     which: Chain,
 ) -> Result<Prepared, SeparationError> {
-    let mut out = Prepared::default();
-    for (k, &at) in env.at.iter().enumerate() {
-        match at {
+    let bps = env.bps;
+    let mut out = Prepared {
+        pts: Vec::with_capacity(bps.len()),
+        idx: Vec::with_capacity(bps.len()),
+        edges: Vec::with_capacity(bps.len().saturating_sub(1)),
+    };
+    for bp in bps {
+        match bp.at {
             At::Vertex(w) => {
                 out.pts.push(c.v[w]);
                 out.idx.push(c.idx[w]);
             }
             // Only with a non-simple chain or inconsistent decisions.
-            At::Edge(_) => return Err(c.bad(env.ys[k], which)),
+            At::Edge(_) => return Err(c.bad(bp.y, which)),
         }
     }
     // The last breakpoint's gap (`None`) is not an interval.
-    let gaps = &env.gaps[..env.ys.len().saturating_sub(1)];
-    for (k, g) in gaps.iter().enumerate() {
-        let Some(e) = *g else {
-            return Err(c.bad(env.ys[k], which));
+    for pair in bps.windows(2) {
+        let Some(e) = pair[0].gap else {
+            return Err(c.bad(pair[0].y, which));
         };
         let (a, b) = c.ends(e);
-        let (vk, vk1) = (env.ys[k], env.ys[k + 1]);
+        let (vk, vk1) = (pair[0].y, pair[1].y);
         let lo = if a == vk || c.frame.cmp_height::<K>(c.v[a], c.v[vk]) == Ordering::Equal {
             Param::Start
         } else {
@@ -503,7 +499,7 @@ pub(crate) fn prepare<K: Kernel>(
         }
     }
     // log2(n) rounds, each halving the number of envelopes.
-    let mut next = Level::with_capacity(level.ys.len());
+    let mut next = Level::with_capacity(level.bps.len());
     while level.segs.len() > 1 {
         next.clear();
         let m = level.segs.len();
@@ -512,19 +508,15 @@ pub(crate) fn prepare<K: Kernel>(
                 merge::<K>(&c, level.env(s), level.env(s + 1), &mut next)
                     .map_err(|w| c.bad(w, which))?;
             } else {
-                let start = next.ys.len();
-                next.extend(level.env(s));
+                let start = next.bps.len();
+                next.bps.extend_from_slice(level.env(s).bps);
                 next.close(start);
             }
         }
         core::mem::swap(&mut level, &mut next);
     }
     let env = if level.segs.is_empty() {
-        Env {
-            ys: &[],
-            at: &[],
-            gaps: &[],
-        }
+        Env { bps: &[] }
     } else {
         level.env(0)
     };

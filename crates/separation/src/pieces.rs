@@ -175,7 +175,8 @@ pub(crate) fn pieces<K: Kernel>(prep: &Prepared, frame: Frame) -> Vec<Piece> {
     // Lower spans per edge (ascending), from the bottom-to-top scan (the mirror image), each merged
     // with the edge's upper spans and clipped at once.
     let mut lower: Vec<Span> = Vec::new();
-    let mut out: Vec<Piece> = Vec::new();
+    // Typically about one piece per edge.
+    let mut out: Vec<Piece> = Vec::with_capacity(n - 1);
     stack.clear();
     for i in 0..n {
         if i >= 1 {
