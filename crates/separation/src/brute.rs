@@ -392,7 +392,10 @@ fn scan_best<K: Kernel>(p: &[DVec2], q: &[DVec2], interior_only: bool) -> Cand {
     };
     for i in 0..p.len() {
         for j in 0..q.len() {
-            consider(Cand::Vv(i, j));
+            // `Vv(0, 0)` is the initial best: against itself it is `Equal` under every kernel.
+            if i > 0 || j > 0 {
+                consider(Cand::Vv(i, j));
+            }
         }
     }
     for i in 0..p.len() {
