@@ -40,25 +40,74 @@ enum At {
     Edge(usize),
 }
 
-/// The envelope of a sub-chain: breakpoints (vertices giving their heights) strictly increasing in
-/// height, the nearest point at each, and the nearest edge (or a gap) in each open interval
-/// between consecutive breakpoints.
-#[derive(Clone, Debug, Default)]
-struct Env {
-    ys: Vec<usize>,
-    at: Vec<At>,
-    gaps: Vec<Option<usize>>,
+/// A breakpoint of an envelope: the vertex `y` giving its height, the nearest point `at` there, and
+/// the nearest edge (or a gap) `gap` in the open interval just above it (`None` above the last).
+#[derive(Clone, Copy, Debug)]
+struct Bp {
+    y: usize,
+    at: At,
+    gap: Option<usize>,
 }
 
-impl Env {
+/// The envelope of a sub-chain, borrowed from a [`Level`]: breakpoints strictly increasing in
+/// height.
+#[derive(Clone, Copy)]
+struct Env<'a> {
+    bps: &'a [Bp],
+}
+
+impl Env<'_> {
     /// The edge over the open interval just below breakpoint `i` (`None` below the first and above
     /// the last).
+    #[inline]
     fn open(&self, i: usize) -> Option<usize> {
-        if i > 0 && i < self.ys.len() {
-            self.gaps[i - 1]
+        if i > 0 && i < self.bps.len() {
+            self.bps[i - 1].gap
         } else {
             None
         }
+    }
+}
+
+/// The envelopes of consecutive sub-chains stored back to back in one flat array (one round of the
+/// divide and conquer): envelope `s` is the range `segs[s]` of breakpoints. Two levels are reused in
+/// turn, so a round allocates nothing once the arrays have grown.
+#[derive(Default)]
+struct Level {
+    bps: Vec<Bp>,
+    segs: Vec<(usize, usize)>,
+}
+
+impl Level {
+    fn with_capacity(n: usize) -> Level {
+        Level {
+            bps: Vec::with_capacity(n),
+            segs: Vec::new(),
+        }
+    }
+
+    fn clear(&mut self) {
+        self.bps.clear();
+        self.segs.clear();
+    }
+
+    #[inline]
+    fn env(&self, s: usize) -> Env<'_> {
+        let (lo, hi) = self.segs[s];
+        Env {
+            bps: &self.bps[lo..hi],
+        }
+    }
+
+    #[inline]
+    fn push(&mut self, y: usize, at: At, gap: Option<usize>) {
+        self.bps.push(Bp { y, at, gap });
+    }
+
+    /// Closes the envelope begun at breakpoint `start`.
+    #[inline]
+    fn close(&mut self, start: usize) {
+        self.segs.push((start, self.bps.len()));
     }
 }
 
@@ -157,14 +206,14 @@ fn nearer<K: Kernel>(c: &Ctx<'_>, x: At, y: At) -> Result<At, Bad> {
     Ok(if o == Ordering::Greater { y } else { x })
 }
 
-/// The envelope of a single edge.
-fn leaf<K: Kernel>(c: &Ctx<'_>, e: usize, ends: (usize, usize)) -> Env {
+/// Appends the envelope of a single edge.
+fn leaf<K: Kernel>(c: &Ctx<'_>, e: usize, ends: (usize, usize), out: &mut Level) {
+    let start = out.bps.len();
     match c.lohi[e] {
-        Some((a, b)) => Env {
-            ys: vec![a, b],
-            at: vec![At::Vertex(a), At::Vertex(b)],
-            gaps: vec![Some(e)],
-        },
+        Some((a, b)) => {
+            out.push(a, At::Vertex(a), Some(e));
+            out.push(b, At::Vertex(b), None);
+        }
         None => {
             // Perpendicular to the line: only the nearer end is visible.
             let (u, w) = ends;
@@ -173,55 +222,55 @@ fn leaf<K: Kernel>(c: &Ctx<'_>, e: usize, ends: (usize, usize)) -> Env {
             } else {
                 u
             };
-            Env {
-                ys: vec![k],
-                at: vec![At::Vertex(k)],
-                gaps: Vec::new(),
-            }
+            out.push(k, At::Vertex(k), None);
         }
     }
+    out.close(start);
 }
 
-/// `lo` then `hi`, whose height ranges meet at most at `lo`'s top = `hi`'s bottom.
-fn concat<K: Kernel>(c: &Ctx<'_>, mut lo: Env, hi: Env) -> Result<Env, Bad> {
-    let (Some(&top), Some(&bot)) = (lo.ys.last(), hi.ys.first()) else {
-        return Ok(if lo.ys.is_empty() { hi } else { lo });
+/// Appends `lo` then `hi`, whose height ranges meet at most at `lo`'s top = `hi`'s bottom.
+fn concat<K: Kernel>(c: &Ctx<'_>, lo: Env<'_>, hi: Env<'_>, out: &mut Level) -> Result<(), Bad> {
+    out.bps.extend_from_slice(lo.bps);
+    let (Some(top), Some(bot)) = (lo.bps.last(), hi.bps.first()) else {
+        out.bps.extend_from_slice(hi.bps);
+        return Ok(());
     };
-    let mut hi_at = hi.at.into_iter();
-    let mut hi_ys = hi.ys.into_iter();
-    if c.frame.cmp_height::<K>(c.v[top], c.v[bot]) == Ordering::Equal {
-        let (x, y) = (lo.at.pop(), hi_at.next());
-        hi_ys.next();
-        if let (Some(x), Some(y)) = (x, y) {
-            lo.at.push(nearer::<K>(c, x, y)?);
+    if c.frame.cmp_height::<K>(c.v[top.y], c.v[bot.y]) == Ordering::Equal {
+        // One breakpoint at the common height, with `hi`'s gap above (`lo`'s last is `None`).
+        let at = nearer::<K>(c, top.at, bot.at)?;
+        if let Some(last) = out.bps.last_mut() {
+            last.at = at;
+            last.gap = bot.gap;
         }
+        out.bps.extend_from_slice(&hi.bps[1..]);
     } else {
-        lo.gaps.push(None);
+        // `lo`'s last gap (`None`) is the empty interval between the two.
+        out.bps.extend_from_slice(hi.bps);
     }
-    lo.ys.extend(hi_ys);
-    lo.at.extend(hi_at);
-    lo.gaps.extend(hi.gaps);
-    Ok(lo)
+    Ok(())
 }
 
-/// The envelope of the union of two sub-chains. `O(|a| + |b|)` tests of degree 2.
-fn merge<K: Kernel>(c: &Ctx<'_>, a: Env, b: Env) -> Result<Env, Bad> {
-    let (Some(&a_top), Some(&b_top)) = (a.ys.last(), b.ys.last()) else {
-        return Ok(if a.ys.is_empty() { b } else { a });
+/// Appends the envelope of the union of two sub-chains. `O(|a| + |b|)` tests of degree 2.
+fn merge<K: Kernel>(c: &Ctx<'_>, a: Env<'_>, b: Env<'_>, out: &mut Level) -> Result<(), Bad> {
+    let start = out.bps.len();
+    let (Some(a_top), Some(b_top)) = (a.bps.last(), b.bps.last()) else {
+        out.bps
+            .extend_from_slice(if a.bps.is_empty() { b.bps } else { a.bps });
+        out.close(start);
+        return Ok(());
     };
-    let (a_bot, b_bot) = (a.ys[0], b.ys[0]);
+    let (a_top, b_top, a_bot, b_bot) = (a_top.y, b_top.y, a.bps[0].y, b.bps[0].y);
     if c.frame.cmp_height::<K>(c.v[a_top], c.v[b_bot]) != Ordering::Greater {
-        return concat::<K>(c, a, b);
+        concat::<K>(c, a, b, out)?;
+        out.close(start);
+        return Ok(());
     }
     if c.frame.cmp_height::<K>(c.v[b_top], c.v[a_bot]) != Ordering::Greater {
-        return concat::<K>(c, b, a);
+        concat::<K>(c, b, a, out)?;
+        out.close(start);
+        return Ok(());
     }
-    let (na, nb) = (a.ys.len(), b.ys.len());
-    let mut out = Env {
-        ys: Vec::with_capacity(na + nb),
-        at: Vec::with_capacity(na + nb),
-        gaps: Vec::with_capacity(na + nb),
-    };
+    let (na, nb) = (a.bps.len(), b.bps.len());
     // The last pair of edges compared and the result: the order of two disjoint edges is the same
     // over every interval they both span.
     let mut last: Option<(usize, usize, Ordering)> = None;
@@ -233,11 +282,11 @@ fn merge<K: Kernel>(c: &Ctx<'_>, a: Env, b: Env) -> Result<Env, Bad> {
         } else if j == nb {
             Ordering::Less
         } else {
-            c.frame.cmp_height::<K>(c.v[a.ys[i]], c.v[b.ys[j]])
+            c.frame.cmp_height::<K>(c.v[a.bps[i].y], c.v[b.bps[j].y])
         };
         let (y, pt) = match o {
             Ordering::Less => {
-                let (y, p) = (a.ys[i], a.at[i]);
+                let (y, p) = (a.bps[i].y, a.bps[i].at);
                 i += 1;
                 match b.open(j) {
                     Some(e) => (y, nearer::<K>(c, p, At::Edge(e))?),
@@ -245,7 +294,7 @@ fn merge<K: Kernel>(c: &Ctx<'_>, a: Env, b: Env) -> Result<Env, Bad> {
                 }
             }
             Ordering::Greater => {
-                let (y, p) = (b.ys[j], b.at[j]);
+                let (y, p) = (b.bps[j].y, b.bps[j].at);
                 j += 1;
                 match a.open(i) {
                     Some(e) => (y, nearer::<K>(c, At::Edge(e), p)?),
@@ -253,17 +302,15 @@ fn merge<K: Kernel>(c: &Ctx<'_>, a: Env, b: Env) -> Result<Env, Bad> {
                 }
             }
             Ordering::Equal => {
-                let y = a.ys[i];
-                let p = nearer::<K>(c, a.at[i], b.at[j])?;
+                let y = a.bps[i].y;
+                let p = nearer::<K>(c, a.bps[i].at, b.bps[j].at)?;
                 i += 1;
                 j += 1;
                 (y, p)
             }
         };
-        out.ys.push(y);
-        out.at.push(pt);
-        if i < na || j < nb {
-            let g = match (a.open(i), b.open(j)) {
+        let g = if i < na || j < nb {
+            match (a.open(i), b.open(j)) {
                 (Some(e), Some(f)) => {
                     let o = match last {
                         Some((x, z, o)) if (x, z) == (e, f) => o,
@@ -277,35 +324,36 @@ fn merge<K: Kernel>(c: &Ctx<'_>, a: Env, b: Env) -> Result<Env, Bad> {
                 }
                 (e, None) => e,
                 (None, f) => f,
-            };
-            out.gaps.push(g);
-        }
+            }
+        } else {
+            None
+        };
+        out.push(y, pt, g);
     }
-    Ok(coalesce(out))
+    coalesce(out, start);
+    out.close(start);
+    Ok(())
 }
 
-/// Drops the breakpoints at interior points of an edge that is nearest on both sides (they are not
-/// breakpoints of the envelope). No predicate.
-fn coalesce(env: Env) -> Env {
-    let n = env.ys.len();
-    let mut out = Env {
-        ys: Vec::with_capacity(n),
-        at: Vec::with_capacity(n),
-        gaps: Vec::with_capacity(n),
-    };
+/// Drops, from the breakpoints `start..` of `out`, those at interior points of an edge that is
+/// nearest on both sides (they are not breakpoints of the envelope), in place. No predicate.
+fn coalesce(out: &mut Level, start: usize) {
+    let bps = &mut out.bps;
+    let n = bps.len() - start;
+    let mut w = start;
     for k in 0..n {
-        if let At::Edge(e) = env.at[k] {
-            if k > 0 && k + 1 < n && env.gaps[k - 1] == Some(e) && env.gaps[k] == Some(e) {
-                continue; // the gap below (already pushed) continues above
+        let r = start + k;
+        if let At::Edge(e) = bps[r].at {
+            // `bps[r - 1]` is still the original: writes so far went below `w ≤ r`, or to `r - 1`
+            // itself while nothing was dropped.
+            if k > 0 && k + 1 < n && bps[r - 1].gap == Some(e) && bps[r].gap == Some(e) {
+                continue; // the gap below (already kept) continues above
             }
         }
-        out.ys.push(env.ys[k]);
-        out.at.push(env.at[k]);
-        if k + 1 < n {
-            out.gaps.push(env.gaps[k]);
-        }
+        bps[w] = bps[r];
+        w += 1;
     }
-    out
+    bps.truncate(w);
 }
 
 /// A chain with repeated consecutive vertices dropped and a closing repeat removed.
@@ -356,26 +404,32 @@ fn clean(chain: &[DVec2], which: Chain) -> Result<Clean, SeparationError> {
 fn to_prepared<K: Kernel>(
     c: &Ctx<'_>,
     cl: &Clean,
-    env: &Env,
+    env: Env<'_>,
     which: Chain,
 ) -> Result<Prepared, SeparationError> {
-    let mut out = Prepared::default();
-    for (k, &at) in env.at.iter().enumerate() {
-        match at {
+    let bps = env.bps;
+    let mut out = Prepared {
+        pts: Vec::with_capacity(bps.len()),
+        idx: Vec::with_capacity(bps.len()),
+        edges: Vec::with_capacity(bps.len().saturating_sub(1)),
+    };
+    for bp in bps {
+        match bp.at {
             At::Vertex(w) => {
                 out.pts.push(c.v[w]);
                 out.idx.push(c.idx[w]);
             }
             // Only with a non-simple chain or inconsistent decisions.
-            At::Edge(_) => return Err(c.bad(env.ys[k], which)),
+            At::Edge(_) => return Err(c.bad(bp.y, which)),
         }
     }
-    for (k, g) in env.gaps.iter().enumerate() {
-        let Some(e) = *g else {
-            return Err(c.bad(env.ys[k], which));
+    // The last breakpoint's gap (`None`) is not an interval.
+    for pair in bps.windows(2) {
+        let Some(e) = pair[0].gap else {
+            return Err(c.bad(pair[0].y, which));
         };
         let (a, b) = c.ends(e);
-        let (vk, vk1) = (env.ys[k], env.ys[k + 1]);
+        let (vk, vk1) = (pair[0].y, pair[1].y);
         let lo = if a == vk || c.frame.cmp_height::<K>(c.v[a], c.v[vk]) == Ordering::Equal {
             Param::Start
         } else {
@@ -435,33 +489,38 @@ pub(crate) fn prepare<K: Kernel>(
         idx: &cl.idx,
         lohi: &lohi,
     };
-    let mut level: Vec<Env> = if cl.edges.is_empty() {
-        vec![Env {
-            ys: vec![0],
-            at: vec![At::Vertex(0)],
-            gaps: Vec::new(),
-        }]
+    let mut level = Level::with_capacity(2 * cl.edges.len().max(1));
+    if cl.edges.is_empty() {
+        level.push(0, At::Vertex(0), None);
+        level.close(0);
     } else {
-        cl.edges
-            .iter()
-            .enumerate()
-            .map(|(e, &(u, w, _))| leaf::<K>(&c, e, (u, w)))
-            .collect()
-    };
-    // log2(n) rounds, each halving the list.
-    while level.len() > 1 {
-        let mut next = Vec::with_capacity(level.len().div_ceil(2));
-        let mut it = level.into_iter();
-        while let Some(x) = it.next() {
-            match it.next() {
-                Some(y) => next.push(merge::<K>(&c, x, y).map_err(|w| c.bad(w, which))?),
-                None => next.push(x),
+        for (e, &(u, w, _)) in cl.edges.iter().enumerate() {
+            leaf::<K>(&c, e, (u, w), &mut level);
+        }
+    }
+    // log2(n) rounds, each halving the number of envelopes.
+    let mut next = Level::with_capacity(level.bps.len());
+    while level.segs.len() > 1 {
+        next.clear();
+        let m = level.segs.len();
+        for s in (0..m).step_by(2) {
+            if s + 1 < m {
+                merge::<K>(&c, level.env(s), level.env(s + 1), &mut next)
+                    .map_err(|w| c.bad(w, which))?;
+            } else {
+                let start = next.bps.len();
+                next.bps.extend_from_slice(level.env(s).bps);
+                next.close(start);
             }
         }
-        level = next;
+        core::mem::swap(&mut level, &mut next);
     }
-    let env = level.pop().unwrap_or_default();
-    to_prepared::<K>(&c, &cl, &env, which)
+    let env = if level.segs.is_empty() {
+        Env { bps: &[] }
+    } else {
+        level.env(0)
+    };
+    to_prepared::<K>(&c, &cl, env, which)
 }
 
 /// The `O(n²)` twin of [`prepare`]: for every distinct vertex height, the nearest point of the
@@ -505,7 +564,7 @@ pub(crate) fn prepare_brute<K: Kernel>(
         })
     };
     let bad = |w: Bad| c.bad(w, which);
-    let mut env = Env::default();
+    let mut env = Level::with_capacity(hs.len());
     for (k, &h) in hs.iter().enumerate() {
         let mut best: Option<At> = None;
         for w in 0..m {
@@ -524,9 +583,8 @@ pub(crate) fn prepare_brute<K: Kernel>(
                 });
             }
         }
-        env.ys.push(h);
-        env.at.push(best.unwrap_or(At::Vertex(h)));
-        if k + 1 < hs.len() {
+        let at = best.unwrap_or(At::Vertex(h));
+        let gap = if k + 1 < hs.len() {
             // Edges spanning the slab above h: bottom at or below h, top above h.
             let mut g: Option<usize> = None;
             for (e, ends) in lohi.iter().enumerate() {
@@ -546,11 +604,15 @@ pub(crate) fn prepare_brute<K: Kernel>(
                     });
                 }
             }
-            env.gaps.push(g);
-        }
+            g
+        } else {
+            None
+        };
+        env.push(h, at, gap);
     }
-    let env = coalesce(env);
-    to_prepared::<K>(&c, &cl, &env, which)
+    coalesce(&mut env, 0);
+    env.close(0);
+    to_prepared::<K>(&c, &cl, env.env(0), which)
 }
 
 /// The perpendicular-visibility envelope of one chain (Lemma 2), in the caller's indices: what

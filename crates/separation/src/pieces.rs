@@ -43,10 +43,15 @@ fn pair_form(c: DVec2, c2: DVec2) -> Affine {
     }
 }
 
-/// Splits `spans` (with tangent candidates) where the tangent stops being strictly nearer to the
-/// line than the point: `h(x) = t` only where `depth(t) < depth(x)`.
-fn depth_rule<K: Kernel>(e: &Edge, frame: Frame, spans: Vec<Span>) -> Vec<Span> {
-    let mut out = Vec::with_capacity(spans.len() + 1);
+/// Splits `spans` (with tangent candidates, ascending) where the tangent stops being strictly
+/// nearer to the line than the point: `h(x) = t` only where `depth(t) < depth(x)`. Appends the
+/// result to `out`.
+fn depth_rule<K: Kernel>(
+    e: &Edge,
+    frame: Frame,
+    spans: impl Iterator<Item = Span>,
+    out: &mut Vec<Span>,
+) {
     for s in spans {
         let Some(t) = s.tangent else {
             out.push(s);
@@ -80,7 +85,6 @@ fn depth_rule<K: Kernel>(e: &Edge, frame: Frame, spans: Vec<Span>) -> Vec<Span> 
             _ => out.push(Span { tangent: None, ..s }),
         }
     }
-    out
 }
 
 /// The pieces of every edge of `pts` (strictly increasing in height), in height order.
@@ -90,6 +94,10 @@ fn depth_rule<K: Kernel>(e: &Edge, frame: Frame, spans: Vec<Span>) -> Vec<Span> 
 /// it crosses the line of each popped pair `m ≥ 2` (Amato's breakpoints; at most one per popped hull
 /// edge, so `O(n)` in all), and where the tangent point's depth is reached. The two partitions are
 /// merged and each piece is clipped to `F(t) ≤ 0`. `O(n)` predicates of degree ≤ 6.
+///
+/// The top-to-bottom scan stores every edge's upper spans back to back in one array; the
+/// bottom-to-top scan merges each edge's lower spans with them as soon as they are known (edges
+/// in increasing order, as the pieces are numbered), in reused scratch space.
 pub(crate) fn pieces<K: Kernel>(prep: &Prepared, frame: Frame) -> Vec<Piece> {
     let pts = &prep.pts[..];
     let n = pts.len();
@@ -98,26 +106,27 @@ pub(crate) fn pieces<K: Kernel>(prep: &Prepared, frame: Frame) -> Vec<Piece> {
     }
     // The real edges; an end may be a vertex hidden behind the nearest vertex of a run at its
     // height (an edge perpendicular to the line).
-    let edges: Vec<Edge> = (0..n - 1)
-        .map(|k| {
-            let (a, b, _, _) = prep.edge(k);
-            Edge { a, b }
-        })
-        .collect();
+    let edge = |k: usize| {
+        let (a, b, _, _) = prep.edge(k);
+        Edge { a, b }
+    };
     // The part of each edge on the envelope: a shadow point or hidden run vertex at either end is
     // at the height of the visible vertex and deeper.
-    let ranges: Vec<(Param, Param)> = prep.edges.iter().map(|r| (r.lo, r.hi)).collect();
-    // Upper spans per edge (ascending), from the top-to-bottom scan. For the edge below vertex i,
-    // the hull pairs popped at its bottom end are walked before vertex i pops: when that end is a
-    // hidden run vertex (deeper than `pts[i]` at the same height) they are a prefix of the pairs
-    // `pts[i]` pops (a pair pops for points on its line's side toward `l`), so the walk is amortized.
-    let mut upper: Vec<Vec<Span>> = vec![Vec::new(); n - 1];
+    let range = |k: usize| (prep.edges[k].lo, prep.edges[k].hi);
+    // Upper spans per edge (ascending), from the top-to-bottom scan: edge `k`'s are
+    // `upper[upper_at[k].0..upper_at[k].1]`. For the edge below vertex i, the hull pairs popped at
+    // its bottom end are walked before vertex i pops: when that end is a hidden run vertex (deeper
+    // than `pts[i]` at the same height) they are a prefix of the pairs `pts[i]` pops (a pair pops
+    // for points on its line's side toward `l`), so the walk is amortized.
+    let mut upper: Vec<Span> = Vec::with_capacity(2 * n);
+    let mut upper_at: Vec<(usize, usize)> = vec![(0, 0); n - 1];
+    let mut scratch: Vec<Span> = Vec::new();
     let mut stack: Vec<usize> = Vec::with_capacity(n);
     for i in (0..n).rev() {
         if i + 1 < n {
-            let e = &edges[i];
-            let (lo, hi) = ranges[i];
-            let mut desc: Vec<Span> = Vec::new();
+            let e = &edge(i);
+            let (lo, hi) = range(i);
+            scratch.clear();
             let mut top = hi;
             let mut cur = stack.last().map(|&c| pts[c]);
             for t in (1..stack.len()).rev() {
@@ -136,7 +145,7 @@ pub(crate) fn pieces<K: Kernel>(prep: &Prepared, frame: Frame) -> Vec<Piece> {
                     break; // pops at the bottom end only
                 }
                 let w = Param::Root(pair_form(cm, cm1));
-                desc.push(Span {
+                scratch.push(Span {
                     bot: w,
                     top,
                     tangent: cur,
@@ -144,13 +153,15 @@ pub(crate) fn pieces<K: Kernel>(prep: &Prepared, frame: Frame) -> Vec<Piece> {
                 top = w;
                 cur = Some(cm1);
             }
-            desc.push(Span {
+            scratch.push(Span {
                 bot: lo,
                 top,
                 tangent: cur,
             });
-            desc.reverse();
-            upper[i] = depth_rule::<K>(e, frame, desc);
+            // `scratch` is descending.
+            let start = upper.len();
+            depth_rule::<K>(e, frame, scratch.iter().rev().copied(), &mut upper);
+            upper_at[i] = (start, upper.len());
         }
         let p = pts[i];
         while let [.., c2, c1] = stack[..] {
@@ -161,14 +172,18 @@ pub(crate) fn pieces<K: Kernel>(prep: &Prepared, frame: Frame) -> Vec<Piece> {
         }
         stack.push(i);
     }
-    // Lower spans per edge (ascending), from the bottom-to-top scan (the mirror image).
-    let mut lower: Vec<Vec<Span>> = vec![Vec::new(); n - 1];
+    // Lower spans per edge (ascending), from the bottom-to-top scan (the mirror image), each merged
+    // with the edge's upper spans and clipped at once.
+    let mut lower: Vec<Span> = Vec::new();
+    // Typically about one piece per edge.
+    let mut out: Vec<Piece> = Vec::with_capacity(n - 1);
     stack.clear();
     for i in 0..n {
         if i >= 1 {
-            let e = &edges[i - 1];
-            let (lo, hi) = ranges[i - 1];
-            let mut asc: Vec<Span> = Vec::new();
+            let k = i - 1;
+            let e = &edge(k);
+            let (lo, hi) = range(k);
+            scratch.clear();
             let mut bot = lo;
             let mut cur = stack.last().map(|&d| pts[d]);
             for t in (1..stack.len()).rev() {
@@ -187,7 +202,7 @@ pub(crate) fn pieces<K: Kernel>(prep: &Prepared, frame: Frame) -> Vec<Piece> {
                     break;
                 }
                 let w = Param::Root(pair_form(dm, dm1));
-                asc.push(Span {
+                scratch.push(Span {
                     bot,
                     top: w,
                     tangent: cur,
@@ -195,12 +210,15 @@ pub(crate) fn pieces<K: Kernel>(prep: &Prepared, frame: Frame) -> Vec<Piece> {
                 bot = w;
                 cur = Some(dm1);
             }
-            asc.push(Span {
+            scratch.push(Span {
                 bot,
                 top: hi,
                 tangent: cur,
             });
-            lower[i - 1] = depth_rule::<K>(e, frame, asc);
+            lower.clear();
+            depth_rule::<K>(e, frame, scratch.iter().copied(), &mut lower);
+            let (u0, u1) = upper_at[k];
+            merge_and_clip::<K>(&mut out, k, e, (lo, hi), &upper[u0..u1], &lower);
         }
         let p = pts[i];
         while let [.., d2, d1] = stack[..] {
@@ -211,37 +229,44 @@ pub(crate) fn pieces<K: Kernel>(prep: &Prepared, frame: Frame) -> Vec<Piece> {
         }
         stack.push(i);
     }
-    // Merge and clip.
-    let mut out: Vec<Piece> = Vec::new();
-    for (k, e) in edges.iter().enumerate() {
-        let (us, ls) = (&upper[k], &lower[k]);
-        let (mut iu, mut il) = (0, 0);
-        let mut bot = ranges[k].0;
-        // Each step advances at least one list: at most |us| + |ls| steps.
-        while iu < us.len() && il < ls.len() {
-            let (tu, tl) = (us[iu].top, ls[il].top);
-            let o = e.cmp::<K>(&tu, &tl);
-            let top = if o == Ordering::Greater { tl } else { tu };
-            if e.cmp::<K>(&bot, &top) == Ordering::Less {
-                clip_and_push::<K>(
-                    &mut out,
-                    k,
-                    e,
-                    ranges[k],
-                    (bot, top),
-                    (us[iu].tangent, ls[il].tangent),
-                );
-                bot = top;
-            }
-            if o != Ordering::Greater {
-                iu += 1;
-            }
-            if o != Ordering::Less {
-                il += 1;
-            }
+    out
+}
+
+/// Merges the upper spans `us` and lower spans `ls` of edge `k` (each ascending, covering `range`)
+/// into the pieces where both tangents are constant, clipped and pushed.
+fn merge_and_clip<K: Kernel>(
+    out: &mut Vec<Piece>,
+    k: usize,
+    e: &Edge,
+    range: (Param, Param),
+    us: &[Span],
+    ls: &[Span],
+) {
+    let (mut iu, mut il) = (0, 0);
+    let mut bot = range.0;
+    // Each step advances at least one list: at most |us| + |ls| steps.
+    while iu < us.len() && il < ls.len() {
+        let (tu, tl) = (us[iu].top, ls[il].top);
+        let o = e.cmp::<K>(&tu, &tl);
+        let top = if o == Ordering::Greater { tl } else { tu };
+        if e.cmp::<K>(&bot, &top) == Ordering::Less {
+            clip_and_push::<K>(
+                out,
+                k,
+                e,
+                range,
+                (bot, top),
+                (us[iu].tangent, ls[il].tangent),
+            );
+            bot = top;
+        }
+        if o != Ordering::Greater {
+            iu += 1;
+        }
+        if o != Ordering::Less {
+            il += 1;
         }
     }
-    out
 }
 
 /// Clips the piece `[bot, top]` of edge `k` to the arc `F ≤ 0` and pushes what is left.

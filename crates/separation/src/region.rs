@@ -8,7 +8,7 @@ use glam::DVec2;
 use polydist_predicates::{Kernel, Sign};
 
 use crate::frame::Frame;
-use crate::wedge::{Apex, in_wedge};
+use crate::wedge::{Apex, cmp_depth, in_wedge};
 
 /// `R(b)` for a vertex `b` of one chain: the vertices `u^+`, `u^-` of the other chain (`None`: the
 /// boundary is the perpendicular to the line through `b` itself, the text's `u = b^l`).
@@ -89,7 +89,7 @@ pub(crate) fn regions<K: Kernel>(bs: &[Apex], fb: Frame, us: &[Apex], fu: Frame)
 /// nearer to the line than `u^+` and strictly left of `b → u^+` (in the frame of `z`'s side). The
 /// region is closed. At most three degree-2 tests per boundary.
 pub(crate) fn place<K: Kernel>(fu: Frame, b: DVec2, r: &Region, z: DVec2) -> Place {
-    let beyond = |u: DVec2, side: Ordering, orient_side: Sign| match fu.cmp_depth::<K>(z, u) {
+    let beyond = |u: DVec2, side: Ordering, orient_side: Sign| match cmp_depth::<K>(fu, z, u) {
         Ordering::Less => fu.orient::<K>(b, u, z) == orient_side,
         _ => fu.cmp_height::<K>(z, u) == side,
     };

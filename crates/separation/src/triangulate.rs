@@ -345,7 +345,8 @@ fn validate<K: Kernel>(ring: &[DVec2]) -> Result<Vec<usize>, TriangulationError>
         return Err(TriangulationError::InvalidCoordinate { index });
     }
     let mut order: Vec<usize> = (0..n).collect();
-    order.sort_by(|&a, &b| lex(ring[a], ring[b]).then(a.cmp(&b)));
+    // A total order (ties broken by index): the unstable sort gives the one sorted permutation.
+    order.sort_unstable_by(|&a, &b| lex(ring[a], ring[b]).then(a.cmp(&b)));
     for w in order.windows(2) {
         if lex(ring[w[0]], ring[w[1]]) == Ordering::Equal {
             return Err(TriangulationError::RepeatedVertex {
@@ -398,10 +399,12 @@ pub fn triangulate<K: Kernel>(ring: &[DVec2]) -> Result<Triangulation, Triangula
     let order = validate::<K>(ring)?;
     let n = ring.len();
     let diagonals = monotone_diagonals::<K>(ring, &order)?;
-    let pieces = pieces::<K>(ring, &diagonals)?;
+    let faces = pieces::<K>(ring, &diagonals)?;
     let mut triangles = Vec::with_capacity(n - 2);
-    for piece in &pieces {
-        triangulate_monotone::<K>(ring, piece, &mut triangles)?;
+    let mut scratch = Scratch::default();
+    for f in faces.starts.windows(2) {
+        let piece = &faces.verts[f[0]..f[1]];
+        triangulate_monotone::<K>(ring, piece, &mut scratch, &mut triangles)?;
     }
     Triangulation::glue(n, triangles)
 }
@@ -531,13 +534,19 @@ fn half<K: Kernel>(v: DVec2, q: DVec2, x: DVec2) -> Option<u8> {
     }
 }
 
+/// Faces stored back to back: face `f` is `verts[starts[f]..starts[f + 1]]`.
+struct Faces {
+    verts: Vec<usize>,
+    starts: Vec<usize>,
+}
+
 /// Cuts the polygon along `diagonals` and returns the faces, each a counter-clockwise list of ring
 /// indices. Around each vertex the outgoing sides are ordered counter-clockwise from the ring edge
 /// `v → v + 1`; a face turns, at each vertex, to the side just clockwise of the one it came in by.
 fn pieces<K: Kernel>(
     ring: &[DVec2],
     diagonals: &[(usize, usize)],
-) -> Result<Vec<Vec<usize>>, TriangulationError> {
+) -> Result<Faces, TriangulationError> {
     let n = ring.len();
     let bad = |index: usize, what| TriangulationError::Inconsistent { index, what };
     // Outgoing sides per vertex, in one flat array (vertex v owns out[offsets[v]..offsets[v + 1]]):
@@ -608,13 +617,18 @@ fn pieces<K: Kernel>(
     }
     let sides = |v: usize| &out[offsets[v]..offsets[v + 1]];
     let mut used = vec![false; total];
-    let mut faces = Vec::new();
+    // Each side is in exactly one face: `total` vertices in all.
+    let mut faces = Faces {
+        verts: Vec::with_capacity(total),
+        starts: Vec::with_capacity(diagonals.len() + 2),
+    };
+    faces.starts.push(0);
     for start_v in 0..n {
         for start_slot in 0..sides(start_v).len() {
             if used[offsets[start_v] + start_slot] {
                 continue;
             }
-            let mut face = Vec::new();
+            let start = faces.verts.len();
             let (mut v, mut slot) = (start_v, start_slot);
             loop {
                 let id = offsets[v] + slot;
@@ -625,8 +639,8 @@ fn pieces<K: Kernel>(
                     return Err(bad(v, "faces do not close"));
                 }
                 used[id] = true;
-                face.push(v);
-                if face.len() > n {
+                faces.verts.push(v);
+                if faces.verts.len() - start > n {
                     return Err(bad(v, "a face is longer than the ring"));
                 }
                 let w = out[id];
@@ -641,10 +655,10 @@ fn pieces<K: Kernel>(
                 };
                 v = w;
             }
-            if face.len() < 3 {
+            if faces.verts.len() - start < 3 {
                 return Err(bad(start_v, "a face with fewer than 3 vertices"));
             }
-            faces.push(face);
+            faces.starts.push(faces.verts.len());
         }
     }
     Ok(faces)
@@ -664,13 +678,29 @@ enum Chain {
     Both,
 }
 
+/// Working space of [`triangulate_monotone`], reused from piece to piece.
+#[derive(Default)]
+struct Scratch {
+    lower: Vec<usize>,
+    upper: Vec<usize>,
+    seq: Vec<(usize, Chain)>,
+    stack: Vec<(usize, Chain)>,
+}
+
 /// Triangulates a piece monotone in the lexicographic order (a counter-clockwise list of ring
 /// indices), pushing strictly counter-clockwise triangles (de Berg et al. §3.3, strict pops).
 fn triangulate_monotone<K: Kernel>(
     ring: &[DVec2],
     piece: &[usize],
+    scratch: &mut Scratch,
     out: &mut Vec<[u32; 3]>,
 ) -> Result<(), TriangulationError> {
+    let Scratch {
+        lower,
+        upper,
+        seq,
+        stack,
+    } = scratch;
     let m = piece.len();
     let bad = |index: usize, what| TriangulationError::Inconsistent { index, what };
     let pt = |i: usize| ring[i];
@@ -681,13 +711,13 @@ fn triangulate_monotone<K: Kernel>(
         .max_by(|&a, &b| lex(pt(piece[a]), pt(piece[b])))
         .unwrap_or(0);
     // The lower chain lo → hi (forward), the upper chain hi → lo (forward), reversed.
-    let mut lower = Vec::new();
+    lower.clear();
     let mut i = (lo + 1) % m;
     while i != hi {
         lower.push(piece[i]);
         i = (i + 1) % m;
     }
-    let mut upper = Vec::new();
+    upper.clear();
     let mut i = (hi + 1) % m;
     while i != lo {
         upper.push(piece[i]);
@@ -698,11 +728,11 @@ fn triangulate_monotone<K: Kernel>(
         c.windows(2)
             .all(|w| lex(pt(w[0]), pt(w[1])) == Ordering::Less)
     };
-    if !monotone(&lower) || !monotone(&upper) {
+    if !monotone(lower) || !monotone(upper) {
         return Err(bad(piece[lo], "a piece is not monotone"));
     }
     // Merge the chains in sweep order.
-    let mut seq: Vec<(usize, Chain)> = Vec::with_capacity(m);
+    seq.clear();
     seq.push((piece[lo], Chain::Both));
     let (mut a, mut b) = (0, 0);
     while a < lower.len() || b < upper.len() {
@@ -740,11 +770,12 @@ fn triangulate_monotone<K: Kernel>(
         }
         Ok(())
     };
-    let mut stack: Vec<(usize, Chain)> = vec![seq[0], seq[1]];
+    stack.clear();
+    stack.extend_from_slice(&seq[..2]);
     for &(u, chain) in &seq[2..m - 1] {
         let (top, top_chain) = stack[stack.len() - 1];
         if chain != top_chain {
-            fan(u, top_chain, &stack, &mut emit)?;
+            fan(u, top_chain, stack, &mut emit)?;
             stack.clear();
             stack.push((top, top_chain));
             stack.push((u, chain));
@@ -774,7 +805,7 @@ fn triangulate_monotone<K: Kernel>(
     }
     let (last, _) = seq[m - 1];
     let top_chain = stack[stack.len() - 1].1;
-    fan(last, top_chain, &stack, &mut emit)?;
+    fan(last, top_chain, stack, &mut emit)?;
     Ok(())
 }
 

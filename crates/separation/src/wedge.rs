@@ -58,7 +58,7 @@ fn tangents<K: Kernel>(pts: &[DVec2], frame: Frame, upper: bool) -> Vec<Option<u
             }
         }
         if let Some(&t) = stack.last() {
-            if frame.cmp_depth::<K>(pts[t], p) == Ordering::Less {
+            if cmp_depth::<K>(frame, pts[t], p) == Ordering::Less {
                 out[i] = Some(t);
             }
         }
@@ -97,18 +97,33 @@ pub(crate) fn apexes<K: Kernel>(prep: &Prepared, frame: Frame) -> Vec<Apex> {
     out
 }
 
+/// `frame.cmp_depth(a, b)`, the sign of `±(a − b) × d` (`d` the line's direction), answered
+/// `Equal` without the kernel when both products of the cross product have an exactly zero
+/// difference as a factor (`a` and `b` on one line parallel to an axis-parallel separating line):
+/// the exact value is then 0, the one case a floating-point filter cannot certify (Robust would
+/// pay its exact stage), and every kernel answers `Equal`.
+#[inline]
+pub(crate) fn cmp_depth<K: Kernel>(frame: Frame, a: DVec2, b: DVec2) -> Ordering {
+    let (l0, l1) = (frame.l0, frame.l1);
+    // (Only worth testing where the kernel has an exact stage to spare.)
+    if K::EXACT_DECISIONS && (a.x == b.x || l1.y == l0.y) && (a.y == b.y || l1.x == l0.x) {
+        return Ordering::Equal;
+    }
+    frame.cmp_depth::<K>(a, b)
+}
+
 /// `z ∈ W(a)`: `z` strictly inside the open wedge at `a` (frame of `a`'s chain), strictly below the
 /// upper ray and strictly above the lower ray. Two degree-2 tests.
 #[inline]
 pub(crate) fn in_wedge<K: Kernel>(frame: Frame, a: &Apex, z: DVec2) -> bool {
     let below_upper = match a.hi {
         Some(h) => frame.orient::<K>(a.pt, h, z) == Sign::Positive,
-        None => frame.cmp_depth::<K>(z, a.pt) == Ordering::Less,
+        None => cmp_depth::<K>(frame, z, a.pt) == Ordering::Less,
     };
     below_upper
         && match a.lo {
             Some(l) => frame.orient::<K>(a.pt, l, z) == Sign::Negative,
-            None => frame.cmp_depth::<K>(z, a.pt) == Ordering::Less,
+            None => cmp_depth::<K>(frame, z, a.pt) == Ordering::Less,
         }
 }
 
