@@ -266,7 +266,14 @@ impl Edge {
     fn end_against_arc<K: Kernel>(&self, at_end: bool, h: DVec2, l: DVec2) -> (Ordering, Ordering) {
         let x = if at_end { self.b } else { self.a };
         // F(x) = (h − x)·(l − x); the side of the vertex: sign(B) at a, sign(2A + B) at b.
-        let fv = K::dot_sign(x, h, x, l);
+        // At a tangent point (`x` is `h` or `l`, the rule on a star's spikes) `F(x)` is exactly zero:
+        // said without the kernel, whose filter cannot certify a zero (Robust would pay its exact
+        // stage).
+        let fv = if x == h || x == l {
+            Sign::Zero
+        } else {
+            K::dot_sign(x, h, x, l)
+        };
         let vs = K::sign(&EndSide, &flat::<10>(&[x, h, l, self.a, self.b]));
         arc_position(fv, vs)
     }
@@ -309,8 +316,14 @@ impl Edge {
             }
             Param::Clip { h, l, hi, .. } => {
                 let d = g.raw_drop::<K>(self.a, self.b);
+                let ga = g.raw_at::<K>(self.a);
                 if d == Sign::Zero {
-                    g.raw_at::<K>(self.a)
+                    ga
+                } else if ga == g.raw_at::<K>(self.b) {
+                    // `g` is affine: one strict sign at both ends holds on the whole edge, where
+                    // every arc end used as a piece end lies (two degree-2 signs for the degree-6
+                    // placement below).
+                    ga
                 } else {
                     // g(t) = D (root_g − t): sign(D) · sign(root_g − r).
                     let (v1, v2) = self.root_against_arc::<K>(g, *h, *l);
@@ -386,6 +399,26 @@ impl Edge {
                 } else {
                     hi.cmp(hi2)
                 }
+            }
+        }
+    }
+
+    /// `(t vs r1, t vs r2)` for the roots `r1 ≤ r2` of `F` for `(h, l)` (which must exist): both
+    /// orders from one placement, where two [`Self::cmp`] calls would place `t` twice.
+    pub(crate) fn against_arc_ends<K: Kernel>(
+        &self,
+        t: &Param,
+        h: DVec2,
+        l: DVec2,
+        piece: usize,
+    ) -> (Ordering, Ordering) {
+        match t {
+            Param::Start => self.end_against_arc::<K>(false, h, l),
+            Param::End => self.end_against_arc::<K>(true, h, l),
+            Param::Root(f) => self.root_against_arc::<K>(f, h, l),
+            Param::Clip { .. } => {
+                let end = |hi| Param::Clip { h, l, hi, piece };
+                (self.cmp::<K>(t, &end(false)), self.cmp::<K>(t, &end(true)))
             }
         }
     }

@@ -292,21 +292,7 @@ fn clip_and_push<K: Kernel>(
     if e.disc::<K>(h, l) == Sign::Negative {
         return; // α < 90° on the whole line of the edge
     }
-    let arc = |t: &Param| {
-        let r1 = Param::Clip {
-            h,
-            l,
-            hi: false,
-            piece,
-        };
-        let r2 = Param::Clip {
-            h,
-            l,
-            hi: true,
-            piece,
-        };
-        (e.cmp::<K>(t, &r1), e.cmp::<K>(t, &r2))
-    };
+    let arc = |t: &Param| e.against_arc_ends::<K>(t, h, l, piece);
     let (b1, b2) = arc(&bot);
     let (t1, t2) = arc(&top);
     if b2 == Ordering::Greater || t1 == Ordering::Less {
