@@ -289,6 +289,41 @@ fn clip_and_push<K: Kernel>(
         });
         return;
     };
+    // A tangent point at an end `v` of the edge (on a convex corner of the envelope, the rule):
+    // `F(x) = (v − x)·(w − x)` with `v − x = −λu`, `u` from `v` to the other end, `λ ≥ 0`, so on
+    // the edge `F ≤ 0` exactly at `v` and where the affine `g(x) = (w − x)·u ≥ 0`: an interval
+    // from `v`, whose far end is the rational root of `g` (degree 2) instead of an irrational arc
+    // end (the degree-6 placements and the discriminant, which the star in a pocket drove into the
+    // exact stage at 131,072 vertices).
+    let at_end = [(h, l), (l, h)].into_iter().find_map(|(z, w)| {
+        (z == e.a)
+            .then_some((false, w))
+            .or_else(|| (z == e.b).then_some((true, w)))
+    });
+    if let Some((v_is_b, w)) = at_end {
+        let (v, other) = if v_is_b { (e.b, e.a) } else { (e.a, e.b) };
+        let g = Affine {
+            cross: false,
+            c: w,
+            v0: v,
+            v1: other,
+            neg: true,
+        };
+        let (gb, gt) = (e.eval::<K>(&g, &bot), e.eval::<K>(&g, &top));
+        let inside = |s: Sign| s != Sign::Negative;
+        // `g` decreases away from `v`: the piece's end nearer `v` is tested first.
+        let (new_bot, new_top) = match (v_is_b, inside(gb), inside(gt)) {
+            (false, _, true) | (true, true, _) => (bot, top),
+            (false, true, false) if gb == Sign::Zero => (bot, bot),
+            (false, true, false) => (bot, Param::Root(g)),
+            (true, false, true) if gt == Sign::Zero => (top, top),
+            (true, false, true) => (Param::Root(g), top),
+            // Only `v` itself, a vertex (a CVV candidate), or nothing: dropped as below.
+            _ => return,
+        };
+        push_unless_end_point::<K>(out, k, e, range, (new_bot, new_top), (hi, lo));
+        return;
+    }
     if e.disc::<K>(h, l) == Sign::Negative {
         return; // α < 90° on the whole line of the edge
     }
@@ -333,16 +368,28 @@ fn clip_and_push<K: Kernel>(
     // below (found by the soak test, see docs). Dropped.
     // The same holds at a shadow point or hidden vertex ending the edge's part on the envelope: it
     // is strictly dominated by the visible vertex at its height.
-    if e.cmp::<K>(&new_bot, &new_top) == Ordering::Equal
-        && (e.cmp::<K>(&new_bot, &range.0) == Ordering::Equal
-            || e.cmp::<K>(&new_top, &range.1) == Ordering::Equal)
+    push_unless_end_point::<K>(out, k, e, range, (new_bot, new_top), (hi, lo));
+}
+
+/// Pushes the clipped piece unless it is a single point at an end of its range (see above).
+fn push_unless_end_point<K: Kernel>(
+    out: &mut Vec<Piece>,
+    k: usize,
+    e: &Edge,
+    range: (Param, Param),
+    (bot, top): (Param, Param),
+    (hi, lo): (Option<DVec2>, Option<DVec2>),
+) {
+    if e.cmp::<K>(&bot, &top) == Ordering::Equal
+        && (e.cmp::<K>(&bot, &range.0) == Ordering::Equal
+            || e.cmp::<K>(&top, &range.1) == Ordering::Equal)
     {
         return;
     }
     out.push(Piece {
         edge: k,
-        bot: new_bot,
-        top: new_top,
+        bot,
+        top,
         hi,
         lo,
     });
