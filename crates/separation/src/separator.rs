@@ -1054,21 +1054,35 @@ fn dist_of(p: &[DVec2], q: &[DVec2], fp: Feature, fq: Feature) -> Dist2 {
 /// Step 7: `σ(P, Q) = min σ(P_i, Q_i)` over the subproblems of every pass, in `P`'s and `Q`'s
 /// internal features, with the work done.
 ///
-/// Each subproblem is given to section 3 ([`separation_of_chains`]) across the line of its
-/// segment when that line separates the subchains with at most one of them touching it; otherwise
-/// (the line of `l_i` touches both chains, which is the rule, not the exception, since `l_i` runs
-/// from one wall to the other) the subproblem is scanned exactly in `O(|P_i| · |Q_i|)`. A `Q`
-/// subchain that spans the region's gap (a pocket's lid, no part of `Q`) is split there.
+/// Each subproblem of more than [`SCAN_BELOW`] vertex pairs is given to section 3
+/// ([`separation_of_chains`]) across the line of its run, after [`peeled`] has set aside the end
+/// edges that cross that line (each scanned against the other subchain in linear time), when the
+/// line then separates the middles with at most one of them touching it. Otherwise (the line of
+/// `l_i` touches both chains, frequent since `l_i` runs from one wall to the other, or a middle
+/// vertex lies across it) the subproblem is scanned exactly in `O(|P_i| · |Q_i|)`, pruned by
+/// bounding boxes. A `Q` subchain that spans the region's gap (a pocket's lid, no part of `Q`) is
+/// split there.
 pub(crate) fn solve<K: Kernel>(
     p: &SimplePolygon,
     q: &SimplePolygon,
     plan: &Plan,
 ) -> Result<(ClosestPair, SeparationStats), SeparationError> {
+    solve_with::<K>(p, q, plan, SCAN_BELOW)
+}
+
+/// [`solve`], scanning the subproblems of at most `scan_below` vertex pairs without trying section 3
+/// (the tests also run it with `0`, so that every subproblem is offered to section 3).
+fn solve_with<K: Kernel>(
+    p: &SimplePolygon,
+    q: &SimplePolygon,
+    plan: &Plan,
+    scan_below: usize,
+) -> Result<(ClosestPair, SeparationStats), SeparationError> {
     let (p, q) = if plan.swapped { (q, p) } else { (p, q) };
     let mut stats = SeparationStats::default();
     let mut best: Option<(Found, Dist2)> = None;
     for b in &plan.passes {
-        solve_pass::<K>(p, q, b, &mut stats, &mut best);
+        solve_pass::<K>(p, q, b, scan_below, &mut stats, &mut best);
     }
     let (found, _) = best.ok_or(SeparationError::Inconsistent)?;
     let pair = match found {
@@ -1105,6 +1119,7 @@ fn solve_pass<K: Kernel>(
     p: &SimplePolygon,
     q: &SimplePolygon,
     b: &Built,
+    scan_below: usize,
     stats: &mut SeparationStats,
     best: &mut Option<(Found, Dist2)>,
 ) {
@@ -1140,55 +1155,115 @@ fn solve_pass<K: Kernel>(
             };
             let both_touch = [s.lo, s.hi].iter().any(|&v| r.is_p(v) && holds(v))
                 && [s.lo, s.hi].iter().any(|&v| !r.is_p(v) && holds(v));
-            let section3 = if both_touch {
+            let mut fold = |fp: Feature, fq: Feature, (po, qo): (usize, usize), found| {
+                // Chain features (of the parts starting at `po`, `qo`) to internal features.
+                let fp = match fp {
+                    Feature::Vertex(k) => Feature::Vertex((r.pb + plo + po + k) % r.np),
+                    Feature::Edge(k) => Feature::Edge((r.pb + plo + po + k) % r.np),
+                };
+                let fq = match fq {
+                    Feature::Vertex(k) => Feature::Vertex(r.src[qlo + qo + k]),
+                    Feature::Edge(k) => Feature::Edge(r.src[qlo + qo + k + 1]),
+                };
+                let found = match found {
+                    Ok(pair) => Found::Pair(ClosestPair {
+                        feature_p: fp,
+                        feature_q: fq,
+                        ..pair
+                    }),
+                    Err(w) => Found::Scanned(w, fp, fq),
+                };
+                let d = dist_of(vp, vq, fp, fq);
+                if best
+                    .as_ref()
+                    .is_none_or(|(_, bd)| K::cmp_dist2(d, *bd) == Ordering::Less)
+                {
+                    *best = Some((found, d));
+                }
+            };
+            let mut scanned = |pc: &[DVec2], qc: &[DVec2], at: (usize, usize)| {
+                // Large parts (the containing case's long subchains): the same scan, pruned exactly
+                // by bounding boxes.
+                let w = if pc.len() * qc.len() > 256 {
+                    scan_pruned_winner::<K>(pc, qc, true)
+                } else {
+                    scan_winner::<K>(pc, qc, true)
+                };
+                let (fp, fq) = w.features();
+                fold(fp, fq, at, Err(w));
+            };
+            // Small subproblems are scanned: section 3's set-up costs more than the few pairs.
+            let middles = if both_touch || pcv.len() * qcv.len() <= scan_below {
                 None
             } else {
-                separation_of_chains::<K>(&pcv, &qcv, a, c).ok()
+                peeled::<K>(&pcv, &qcv, a, c)
             };
-            let (fp, fq, pair) = match section3 {
-                Some(sep) => {
-                    stats.subproblems_section3 += 1;
-                    (sep.pair.feature_p, sep.pair.feature_q, Ok(sep.pair))
-                }
+            let section3 = middles.and_then(|((p0, p1), (q0, q1))| {
+                let sep = separation_of_chains::<K>(&pcv[p0..=p1], &qcv[q0..=q1], a, c).ok()?;
+                Some((sep, (p0, p1), (q0, q1)))
+            });
+            match section3 {
                 None => {
                     stats.subproblems_scanned += 1;
-                    // Large subproblems (the containing case's few long subchains): the same scan,
-                    // pruned exactly by bounding boxes.
-                    let w = if pcv.len() * qcv.len() > 256 {
-                        scan_pruned_winner::<K>(&pcv, &qcv, true)
-                    } else {
-                        scan_winner::<K>(&pcv, &qcv, true)
-                    };
-                    let (fp, fq) = w.features();
-                    (fp, fq, Err(w))
+                    scanned(&pcv, &qcv, (0, 0));
                 }
-            };
-            // Chain features to internal features.
-            let fp = match fp {
-                Feature::Vertex(k) => Feature::Vertex((r.pb + plo + k) % r.np),
-                Feature::Edge(k) => Feature::Edge((r.pb + plo + k) % r.np),
-            };
-            let fq = match fq {
-                Feature::Vertex(k) => Feature::Vertex(r.src[qlo + k]),
-                Feature::Edge(k) => Feature::Edge(r.src[qlo + k + 1]),
-            };
-            let found = match pair {
-                Ok(pair) => Found::Pair(ClosestPair {
-                    feature_p: fp,
-                    feature_q: fq,
-                    ..pair
-                }),
-                Err(w) => Found::Scanned(w, fp, fq),
-            };
-            let d = dist_of(vp, vq, fp, fq);
-            if best
-                .as_ref()
-                .is_none_or(|(_, bd)| K::cmp_dist2(d, *bd) == Ordering::Less)
-            {
-                *best = Some((found, d));
+                Some((sep, (p0, p1), (q0, q1))) => {
+                    stats.subproblems_section3 += 1;
+                    let (pl, ql) = (pcv.len() - 1, qcv.len() - 1);
+                    // The peeled ends against the rest: `P`'s against all of `Q_i`, `Q`'s against the
+                    // middle of `P_i`, so every pair of edges is in one of the five parts.
+                    if p0 > 0 {
+                        scanned(&pcv[..=p0], &qcv, (0, 0));
+                    }
+                    if p1 < pl {
+                        scanned(&pcv[p1..], &qcv, (p1, 0));
+                    }
+                    if q0 > 0 {
+                        scanned(&pcv[p0..=p1], &qcv[..=q0], (p0, 0));
+                    }
+                    if q1 < ql {
+                        scanned(&pcv[p0..=p1], &qcv[q1..], (p0, q1));
+                    }
+                    fold(
+                        sep.pair.feature_p,
+                        sep.pair.feature_q,
+                        (p0, q0),
+                        Ok(sep.pair),
+                    );
+                }
             }
         }
     }
+}
+
+/// Subproblems with at most this many vertex pairs are scanned without trying section 3.
+const SCAN_BELOW: usize = 256;
+
+/// A partial Step G (docs/algorithms/separator.md): the middle parts `P_i[p0..=p1]`, `Q_i[q0..=q1]`
+/// of two subchains that lie in opposite closed half-planes of the line through `a`, `c`, when the
+/// vertices outside them are the chains' ends and lie strictly on the wrong side (a subchain widened
+/// to the whole edge its cut falls in crosses the line there). The peeled end edges are scanned
+/// against the other chain in `O(|P_i| + |Q_i|)` each; clipping at constructed points, which would
+/// also keep a middle that leaves its half-plane, is not built. `None` when no side assignment
+/// works. `O(|P_i| + |Q_i|)` orientation tests.
+fn peeled<K: Kernel>(
+    p: &[DVec2],
+    q: &[DVec2],
+    a: DVec2,
+    c: DVec2,
+) -> Option<((usize, usize), (usize, usize))> {
+    let middle = |chain: &[DVec2], wrong: Orientation| {
+        let bad = |v: &DVec2| K::orient(a, c, *v) == wrong;
+        let lo = chain.iter().position(|v| !bad(v))?;
+        let hi = chain.iter().rposition(|v| !bad(v))?;
+        (!chain[lo..=hi].iter().any(bad)).then_some((lo, hi))
+    };
+    [
+        (Orientation::Clockwise, Orientation::CounterClockwise),
+        (Orientation::CounterClockwise, Orientation::Clockwise),
+    ]
+    .into_iter()
+    .find_map(|(wp, wq)| Some((middle(p, wp)?, middle(q, wq)?)))
 }
 
 #[cfg(test)]
@@ -1514,17 +1589,21 @@ mod tests {
                 brute.feature_p, brute.feature_q
             ));
         }
-        // σ agrees with the brute force exactly.
-        let (pair, _) = solve::<K>(p, q, &plan).map_err(|e| format!("{e}"))?;
+        // σ agrees with the brute force exactly, with small subproblems scanned (as shipped) and
+        // with every subproblem offered to section 3 (peeled ends scanned).
         let (cp, cq) = (closed_chain(p), closed_chain(q));
         let brute = separation_brute::<K>(&cp, &cq).map_err(|e| format!("{e}"))?;
         let (vp, vq) = (p.vertices(), q.vertices());
-        let d = dist_of(vp, vq, pair.feature_p, pair.feature_q);
         let bd = dist_of(vp, vq, brute.feature_p, brute.feature_q);
-        if K::cmp_dist2(d, bd) != Ordering::Equal {
-            return Err(format!(
-                "σ differs: {pair:?} against the brute force {brute:?}"
-            ));
+        for scan_below in [SCAN_BELOW, 0] {
+            let (pair, _) = solve_with::<K>(p, q, &plan, scan_below).map_err(|e| format!("{e}"))?;
+            let d = dist_of(vp, vq, pair.feature_p, pair.feature_q);
+            if K::cmp_dist2(d, bd) != Ordering::Equal {
+                return Err(format!(
+                    "σ differs (scanning below {scan_below} pairs): {pair:?} against the brute \
+                     force {brute:?}"
+                ));
+            }
         }
         Ok((m, sights_only))
     }
