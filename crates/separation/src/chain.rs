@@ -92,6 +92,20 @@ pub(crate) fn validate<K: Kernel>(
     a: DVec2,
     b: DVec2,
 ) -> Result<Frames, SeparationError> {
+    match validate_touching::<K>(p, q, a, b)? {
+        (Some(frames), false) => Ok(frames),
+        _ => Err(SeparationError::BothChainsTouchLine),
+    }
+}
+
+/// [`validate`], but both chains may touch the line: the frames (`None` when every vertex of both
+/// chains lies on the line, so that no side is defined) and whether both touch it.
+pub(crate) fn validate_touching<K: Kernel>(
+    p: &[DVec2],
+    q: &[DVec2],
+    a: DVec2,
+    b: DVec2,
+) -> Result<(Option<Frames>, bool), SeparationError> {
     if p.is_empty() {
         return Err(SeparationError::EmptyChain { chain: Chain::P });
     }
@@ -123,7 +137,7 @@ pub(crate) fn validate<K: Kernel>(
         {
             Some(s) => s == Sign::Positive,
             // Every vertex of both chains lies on the line.
-            None => return Err(SeparationError::BothChainsTouchLine),
+            None => return Ok((None, true)),
         },
     };
     let (l0, l1) = if swap { (b, a) } else { (a, b) };
@@ -152,10 +166,7 @@ pub(crate) fn validate<K: Kernel>(
             }
         }
     }
-    if touches[0] && touches[1] {
-        return Err(SeparationError::BothChainsTouchLine);
-    }
-    Ok(frames)
+    Ok((Some(frames), touches[0] && touches[1]))
 }
 
 /// Checks that a chain is monotone along the line (heights never decrease, or never increase, along

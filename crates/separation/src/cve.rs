@@ -10,7 +10,7 @@ use glam::DVec2;
 use monotone_minima::Matrix;
 use polydist_predicates::{Dist2, Kernel, Sign};
 
-use crate::chain::{EnvEdge, validate};
+use crate::chain::{EnvEdge, validate_touching};
 use crate::clipped::EdgePart;
 use crate::envelope::prepare;
 use crate::error::{Chain, SeparationError};
@@ -116,7 +116,10 @@ impl<K: Kernel> CveMatrix<K> {
     /// # Errors
     /// See [`separation_of_chains`](crate::separation_of_chains).
     pub fn new(p: &[DVec2], q: &[DVec2], a: DVec2, b: DVec2) -> Result<Self, SeparationError> {
-        let frames = validate::<K>(p, q, a, b)?;
+        // Both chains may touch the line, as in `separation_of_chains`; not both lie on it.
+        let frames = validate_touching::<K>(p, q, a, b)?
+            .0
+            .ok_or(SeparationError::BothChainsTouchLine)?;
         let pp = prepare::<K>(p, frames.p, Chain::P)?;
         let qq = prepare::<K>(q, frames.q, Chain::Q)?;
         let cols = apexes::<K>(&qq, frames.q);

@@ -10,7 +10,7 @@ use monotone_minima::{Matrix, row_minima_by};
 use polydist_polygon::Feature;
 use polydist_predicates::Kernel;
 
-use crate::chain::{Frames, Prepared, check_monotone, validate};
+use crate::chain::{Frames, Prepared, check_monotone, validate, validate_touching};
 use crate::construct::vertex_vertex;
 use crate::envelope::prepare;
 use crate::error::{Chain, SeparationError};
@@ -79,7 +79,10 @@ impl<K: Kernel> CvvMatrix<K> {
     /// # Errors
     /// See [`separation_of_chains`](crate::separation_of_chains).
     pub fn new(p: &[DVec2], q: &[DVec2], a: DVec2, b: DVec2) -> Result<Self, SeparationError> {
-        let frames = validate::<K>(p, q, a, b)?;
+        // Both chains may touch the line, as in `separation_of_chains`; not both lie on it.
+        let frames = validate_touching::<K>(p, q, a, b)?
+            .0
+            .ok_or(SeparationError::BothChainsTouchLine)?;
         let pp = prepare::<K>(p, frames.p, Chain::P)?;
         let qq = prepare::<K>(q, frames.q, Chain::Q)?;
         let rows = apexes::<K>(&pp, frames.p);

@@ -54,9 +54,11 @@ pub enum SeparationError {
         /// The caller's index of the first vertex found on the wrong side.
         index: usize,
     },
-    /// Both chains have a vertex on the separating line. The line then does not decide on which side
-    /// a point of the line belongs, and the perpendicular-visibility wedges of the two chains are
-    /// ambiguous there; pass a line that at most one of the chains touches.
+    /// [`closest_visible_vertices`](crate::closest_visible_vertices) (and its brute force): both
+    /// chains have a vertex on the separating line, whose perpendicular-visibility wedges are then
+    /// ambiguous; pass a line that at most one of the chains touches. The matrix constructors
+    /// (`CvvMatrix::new`, `CveMatrix::new`): every vertex of both chains lies on the line, so no
+    /// side is defined. [`separation_of_chains`](crate::separation_of_chains) accepts both.
     #[error("both chains touch the separating line; at most one may")]
     BothChainsTouchLine,
     /// [`closest_visible_vertices`](crate::closest_visible_vertices) only: the chain is not monotone

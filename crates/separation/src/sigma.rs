@@ -8,7 +8,7 @@ use monotone_minima::row_minima_by;
 use polydist_polygon::Feature;
 use polydist_predicates::{Dist2, Kernel, Sign};
 
-use crate::chain::{EnvEdge, Prepared, validate};
+use crate::chain::{EnvEdge, Prepared, validate_touching};
 use crate::construct::{vertex_edge, vertex_vertex};
 use crate::cve::{CveMatrix, EdgeEntry, compare_edge_entries};
 use crate::cvv::CvvMatrix;
@@ -106,7 +106,7 @@ fn cve<K: Kernel>(m: &CveMatrix<K>, edges: &Prepared, p_side: bool) -> Option<Ca
 ///
 /// # Errors
 /// [`SeparationError`]: empty chains, invalid coordinates or line, a line that does not separate
-/// the chains (a vertex strictly on the wrong side) or that both chains touch,
+/// the chains (a vertex strictly on the wrong side; both chains may touch it, even lie on it),
 /// [`SeparationError::NotSimple`] when a chain is found not to be simple (simplicity is the caller's
 /// duty: not every violation is detected), and (Fast kernel only) [`SeparationError::Inconsistent`]
 /// or `NotSimple` from inconsistent decisions.
@@ -145,7 +145,20 @@ pub fn separation_of_chains<K: Kernel>(
     a: DVec2,
     b: DVec2,
 ) -> Result<ChainSeparation, SeparationError> {
-    let frames = validate::<K>(p, q, a, b)?;
+    let (frames, both_touch) = validate_touching::<K>(p, q, a, b)?;
+    let on_line = if both_touch {
+        on_the_line::<K>(p, q, a, b)
+    } else {
+        None
+    };
+    let Some(frames) = frames else {
+        // Every vertex on the line: the chains lie on it, and the on-line pair is the answer.
+        let c = on_line.ok_or(SeparationError::Inconsistent)?;
+        return Ok(ChainSeparation {
+            pair: build::<K>(c),
+            stats: SeparationStats::default(),
+        });
+    };
     let pp = prepare::<K>(p, frames.p, Chain::P)?;
     let qq = prepare::<K>(q, frames.q, Chain::Q)?;
     let pa = apexes::<K>(&pp, frames.p);
@@ -163,7 +176,7 @@ pub fn separation_of_chains<K: Kernel>(
     let m_qp = CveMatrix::<K>::build(frames.q, frames.p, real_edges(&qq), q_pieces, pa);
     let qe_pv = cve(&m_qp, &qq, false);
     let mut best: Option<Cand> = None;
-    for c in [vv, pe_qv, qe_pv].into_iter().flatten() {
+    for c in [vv, pe_qv, qe_pv, on_line].into_iter().flatten() {
         if best.is_none_or(|b| K::cmp_dist2(c.dist(), b.dist()) == Ordering::Less) {
             best = Some(c);
         }
@@ -179,6 +192,53 @@ pub fn separation_of_chains<K: Kernel>(
             ..SeparationStats::default()
         },
     })
+}
+
+/// The nearest pair of a vertex of `P` and a vertex of `Q` both on the line through `a`, `b`: the
+/// pairs section 3's wedges cannot hold when both chains touch the line (docs/algorithms/
+/// separation.md, "Lines touched by both chains"). Points of one line are ordered along it as
+/// their coordinates are lexicographically (a total order on `f64`, no predicate), and the nearest
+/// pair of two sets of points of a line is adjacent in that order; two edges lying on the line are
+/// disjoint segments, nearest at their ends, so vertices suffice. `O(k log k)` for the `k` vertices
+/// on the line (after `O(n_p + n_q)` orientation tests).
+fn on_the_line<K: Kernel>(p: &[DVec2], q: &[DVec2], a: DVec2, b: DVec2) -> Option<Cand> {
+    let on = |c: &[DVec2], side: bool| {
+        // The repeated last vertex of a closed chain is its vertex 0.
+        let n = if c.len() > 1 && c[0] == c[c.len() - 1] {
+            c.len() - 1
+        } else {
+            c.len()
+        };
+        (0..n)
+            .filter(|&i| K::orient(a, b, c[i]).sign().is_zero())
+            .map(|i| (c[i], i, side))
+            .collect::<Vec<_>>()
+    };
+    let mut all = on(p, true);
+    all.extend(on(q, false));
+    // `+ 0.0` turns `-0.0` into `0.0`, which `total_cmp` would otherwise put first.
+    all.sort_unstable_by(|x, y| {
+        (x.0.x + 0.0)
+            .total_cmp(&(y.0.x + 0.0))
+            .then((x.0.y + 0.0).total_cmp(&(y.0.y + 0.0)))
+    });
+    let mut best: Option<Cand> = None;
+    for w in all.windows(2) {
+        let (x, y) = (w[0], w[1]);
+        if x.2 == y.2 {
+            continue;
+        }
+        let ((vp, i), (vq, j)) = if x.2 {
+            ((x.0, x.1), (y.0, y.1))
+        } else {
+            ((y.0, y.1), (x.0, x.1))
+        };
+        let c = Cand::Vv(vp, i, vq, j);
+        if best.is_none_or(|b| K::cmp_dist2(c.dist(), b.dist()) == Ordering::Less) {
+            best = Some(c);
+        }
+    }
+    best
 }
 
 /// The envelope edges of a prepared chain, between consecutive heights.

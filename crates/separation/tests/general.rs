@@ -143,6 +143,103 @@ fn polygon_pair(
         .iter()
         .map(|&v| (v.0 + k * n.0, v.1 + k * n.1))
         .collect();
+    let name = format!("{kp}({}) vs {kq}({}) extra {extra}", p.len(), q.len());
+    finish(rng, &p, &q, (h1, h2), rot, offset, open, name)
+}
+
+/// Integers `(x, y)` with `a·y − b·x = gcd(a, b)` (extended Euclid), for `(a, b) ≠ (0, 0)`.
+fn bezout(a: i64, b: i64) -> (i64, i64, i64) {
+    // Invariants: r0 = a·u0 + b·v0 style on (a, −b): find u, w with a·u + b·w = g, then y = u, x = −w.
+    let (mut r0, mut r1, mut u0, mut u1, mut w0, mut w1) = (a, b, 1i64, 0i64, 0i64, 1i64);
+    while r1 != 0 {
+        let t = r0.div_euclid(r1);
+        (r0, r1) = (r1, r0 - t * r1);
+        (u0, u1) = (u1, u0 - t * u1);
+        (w0, w1) = (w1, w0 - t * w1);
+    }
+    if r0 < 0 {
+        (r0, u0, w0) = (-r0, -u0, -w0);
+    }
+    (-w0, u0, r0)
+}
+
+/// Two polygons touching one line from both sides: the line through a random edge of `P`'s hull,
+/// `Q` translated exactly onto it (its extreme vertices on the line: a lattice step along the
+/// line's primitive normal direction, by Bézout), then slid along the line so that the two
+/// touching sets are `gap ≥ 1` lattice steps apart, above or below (the polygons are disjoint).
+/// Then the same rotation, offset, cutting and shuffling as [`polygon_pair`].
+fn touching_pair(
+    rng: &mut SplitMix64,
+    np: usize,
+    nq: usize,
+    gap: i64,
+    rot: I,
+    offset: DVec2,
+    open: bool,
+) -> Case {
+    let (p, kp) = polygon(rng, np);
+    let (q, kq) = polygon(rng, nq);
+    let h = hull(&p);
+    let i = rng.index(h.len());
+    let (h1, h2) = (h[i], h[(i + 1) % h.len()]);
+    let (t0, t1, g) = bezout(h2.0 - h1.0, h2.1 - h1.1);
+    let dp = ((h2.0 - h1.0) / g, (h2.1 - h1.1) / g);
+    // cross(dp, v − h1) ≥ 0 on P's side; Q's largest value is brought to 0.
+    let side = |v: I| dp.0 * (v.1 - h1.1) - dp.1 * (v.0 - h1.0);
+    let along = |v: I| dp.0 * (v.0 - h1.0) + dp.1 * (v.1 - h1.1);
+    let q: Vec<I> = q
+        .iter()
+        .map(|&v| (v.0 - q[0].0 + h1.0, v.1 - q[0].1 + h1.1))
+        .collect();
+    let cmax = q.iter().map(|&v| side(v)).max().unwrap_or(0);
+    // −cmax·(t0, t1), shortened by a multiple of `dp` (a move along the line) to stay small.
+    // (In i128: `cmax · t` can exceed i64 before the shortening.)
+    let w = |x: i64| i128::from(x);
+    let tr = (-w(cmax) * w(t0), -w(cmax) * w(t1));
+    let norm = w(dp.0) * w(dp.0) + w(dp.1) * w(dp.1);
+    let k = -(tr.0 * w(dp.0) + tr.1 * w(dp.1)).div_euclid(norm);
+    let tr = (
+        i64::try_from(tr.0 + k * w(dp.0)).unwrap(),
+        i64::try_from(tr.1 + k * w(dp.1)).unwrap(),
+    );
+    let q: Vec<I> = q.iter().map(|&v| (v.0 + tr.0, v.1 + tr.1)).collect();
+    let range = |c: &[I]| {
+        let on: Vec<i64> = c
+            .iter()
+            .filter(|&&v| side(v) == 0)
+            .map(|&v| along(v))
+            .collect();
+        (*on.iter().min().unwrap(), *on.iter().max().unwrap())
+    };
+    let ((pmin, pmax), (qmin, qmax)) = (range(&p), range(&q));
+    let step = dp.0 * dp.0 + dp.1 * dp.1;
+    // Slide by m·dp: `along` moves by m·step.
+    let m = if rng.coin() {
+        (pmax - qmin).div_euclid(step) + gap
+    } else {
+        -((qmax - pmin).div_euclid(step) + gap)
+    };
+    let q: Vec<I> = q
+        .iter()
+        .map(|&v| (v.0 + m * dp.0, v.1 + m * dp.1))
+        .collect();
+    let name = format!("{kp}({}) vs {kq}({}) touching, gap {gap}", p.len(), q.len());
+    finish(rng, &p, &q, (h1, h2), rot, offset, open, name)
+}
+
+/// Places both polygons (integer rotation, offset), cuts open sub-chains or closes them, reverses
+/// and swaps them at random, and orients the line through `h1`, `h2` at random.
+#[allow(clippy::too_many_arguments, reason = "a test generator")]
+fn finish(
+    rng: &mut SplitMix64,
+    p: &[I],
+    q: &[I],
+    (h1, h2): (I, I),
+    rot: I,
+    offset: DVec2,
+    open: bool,
+    mut name: String,
+) -> Case {
     let place = |v: I| {
         let (c, s) = rot;
         DVec2::new(
@@ -152,7 +249,6 @@ fn polygon_pair(
     };
     let mut pw: Vec<DVec2> = p.iter().map(|&v| place(v)).collect();
     let mut qw: Vec<DVec2> = q.iter().map(|&v| place(v)).collect();
-    let mut name = format!("{kp}({}) vs {kq}({}) extra {extra}", p.len(), q.len());
     if open {
         // Contiguous sub-chains (cyclically), at least one vertex: open, simple.
         let cut = |rng: &mut SplitMix64, v: &[DVec2]| {
@@ -238,7 +334,13 @@ fn agree<K: Kernel>(c: &Case, check_matrices: bool) {
             c.name
         );
     }
-    if check_matrices {
+    // With every vertex on the line (touching one-vertex sub-chains) there is no side, hence no
+    // matrix: σ is the on-line pair alone.
+    let all_on_line =
+        c.p.iter()
+            .chain(&c.q)
+            .all(|&v| Exact::orient(c.a, c.b, v).sign().is_zero());
+    if check_matrices && !all_on_line {
         let m = CvvMatrix::<K>::new(&c.p, &c.q, c.a, c.b).unwrap();
         check_totally_monotone_by(&m, compare_entries::<K>)
             .unwrap_or_else(|e| panic!("{}: CVV matrix not totally monotone: {e:?}", c.name));
@@ -262,6 +364,29 @@ fn agree<K: Kernel>(c: &Case, check_matrices: bool) {
                 "{}",
                 c.name
             );
+        }
+    }
+}
+
+/// Both chains touching the line (`touching_pair`), closed and open, every matrix checked on the
+/// small ones: the pairs on the line come from `on_the_line`, every other pair from the wedges.
+#[test]
+fn chains_touching_the_line_from_both_sides() {
+    let mut rng = SplitMix64::new(0x7007_c4ed);
+    for round in 0..1200 {
+        let size = 3 + rng.index(12);
+        let rot = ROTS[rng.index(ROTS.len())];
+        let far = round % 5 == 4;
+        let off = if far {
+            DVec2::new(-1e12, 4e12)
+        } else {
+            DVec2::ZERO
+        };
+        let gap = 1 + rng.range_i64(0, 3);
+        let c = touching_pair(&mut rng, size, size, gap, rot, off, round % 2 == 1);
+        agree::<Robust>(&c, size <= 10);
+        if far {
+            agree::<Exact>(&c, false);
         }
     }
 }
@@ -528,6 +653,21 @@ proptest! {
                                            open in any::<bool>(), far in any::<bool>(),
                                            extra in 0i64..3) {
         agree::<Robust>(&proptest_case(seed, size, open, far, extra), true);
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+    /// Both chains touching the line: σ, its features, the brute force, the envelopes and every
+    /// matrix, as above.
+    #[test]
+    fn proptest_chains_touching_from_both_sides(seed in any::<u64>(), size in 3usize..16,
+                                                open in any::<bool>(), far in any::<bool>(),
+                                                gap in 1i64..4) {
+        let mut rng = SplitMix64::new(seed);
+        let rot = ROTS[rng.index(ROTS.len())];
+        let off = if far { DVec2::new(-1e12, 4e12) } else { DVec2::ZERO };
+        agree::<Robust>(&touching_pair(&mut rng, size, size, gap, rot, off, open), true);
     }
 }
 
