@@ -1057,10 +1057,9 @@ fn dist_of(p: &[DVec2], q: &[DVec2], fp: Feature, fq: Feature) -> Dist2 {
 /// Each subproblem of more than [`SCAN_BELOW`] vertex pairs is given to section 3
 /// ([`separation_of_chains`]) across the line of its run, after [`peeled`] has set aside the end
 /// edges that cross that line (each scanned against the other subchain in linear time), when the
-/// line then separates the middles with at most one of them touching it. Otherwise (the line of
-/// `l_i` touches both chains, frequent since `l_i` runs from one wall to the other, or a middle
-/// vertex lies across it) the subproblem is scanned exactly in `O(|P_i| · |Q_i|)`, pruned by
-/// bounding boxes. A `Q` subchain that spans the region's gap (a pocket's lid, no part of `Q`) is
+/// line then separates the middles (both may touch it). Otherwise (a middle vertex lies across the
+/// line: clipping at constructed points is not built) the subproblem is scanned exactly in
+/// `O(|P_i| · |Q_i|)`, pruned by bounding boxes. A `Q` subchain that spans the region's gap (a pocket's lid, no part of `Q`) is
 /// split there.
 pub(crate) fn solve<K: Kernel>(
     p: &SimplePolygon,
@@ -1144,17 +1143,6 @@ fn solve_pass<K: Kernel>(
             stats.subproblem_vertices += pcv.len() + qcv.len();
             let s = &b.runs[b.kept[i]];
             let (a, c) = (r.ring[s.lo], r.ring[s.hi]);
-            // Both subchains hold a vertex defining the line (known from the indices): section 3
-            // would reject it (`BothChainsTouchLine`) after its exact side tests, so skip the attempt.
-            let holds = |v: usize| {
-                if r.is_p(v) {
-                    (plo..=phi).contains(&r.pos_p(v))
-                } else {
-                    (qlo..=qhi).contains(&v)
-                }
-            };
-            let both_touch = [s.lo, s.hi].iter().any(|&v| r.is_p(v) && holds(v))
-                && [s.lo, s.hi].iter().any(|&v| !r.is_p(v) && holds(v));
             let mut fold = |fp: Feature, fq: Feature, (po, qo): (usize, usize), found| {
                 // Chain features (of the parts starting at `po`, `qo`) to internal features.
                 let fp = match fp {
@@ -1193,7 +1181,7 @@ fn solve_pass<K: Kernel>(
                 fold(fp, fq, at, Err(w));
             };
             // Small subproblems are scanned: section 3's set-up costs more than the few pairs.
-            let middles = if both_touch || pcv.len() * qcv.len() <= scan_below {
+            let middles = if pcv.len() * qcv.len() <= scan_below {
                 None
             } else {
                 peeled::<K>(&pcv, &qcv, a, c)
