@@ -1143,15 +1143,15 @@ fn solve_pass<K: Kernel>(
             stats.subproblem_vertices += pcv.len() + qcv.len();
             let s = &b.runs[b.kept[i]];
             let (a, c) = (r.ring[s.lo], r.ring[s.hi]);
-            let mut fold = |fp: Feature, fq: Feature, (po, qo): (usize, usize), found| {
-                // Chain features (of the parts starting at `po`, `qo`) to internal features.
+            let mut fold = |fp: Feature, fq: Feature, found| {
+                // Subchain features to internal features.
                 let fp = match fp {
-                    Feature::Vertex(k) => Feature::Vertex((r.pb + plo + po + k) % r.np),
-                    Feature::Edge(k) => Feature::Edge((r.pb + plo + po + k) % r.np),
+                    Feature::Vertex(k) => Feature::Vertex((r.pb + plo + k) % r.np),
+                    Feature::Edge(k) => Feature::Edge((r.pb + plo + k) % r.np),
                 };
                 let fq = match fq {
-                    Feature::Vertex(k) => Feature::Vertex(r.src[qlo + qo + k]),
-                    Feature::Edge(k) => Feature::Edge(r.src[qlo + qo + k + 1]),
+                    Feature::Vertex(k) => Feature::Vertex(r.src[qlo + k]),
+                    Feature::Edge(k) => Feature::Edge(r.src[qlo + k + 1]),
                 };
                 let found = match found {
                     Ok(pair) => Found::Pair(ClosestPair {
@@ -1169,59 +1169,177 @@ fn solve_pass<K: Kernel>(
                     *best = Some((found, d));
                 }
             };
-            let mut scanned = |pc: &[DVec2], qc: &[DVec2], at: (usize, usize)| {
-                // Large parts (the containing case's long subchains): the same scan, pruned exactly
-                // by bounding boxes.
-                let w = if pc.len() * qc.len() > 256 {
-                    scan_pruned_winner::<K>(pc, qc, true)
-                } else {
-                    scan_winner::<K>(pc, qc, true)
-                };
-                let (fp, fq) = w.features();
-                fold(fp, fq, at, Err(w));
-            };
             // Small subproblems are scanned: section 3's set-up costs more than the few pairs.
-            let middles = if pcv.len() * qcv.len() <= scan_below {
+            let found = if pcv.len() * qcv.len() <= scan_below {
                 None
             } else {
-                peeled::<K>(&pcv, &qcv, a, c)
+                split::<K>(&pcv, &qcv, a, c).and_then(|jobs| execute::<K>(&pcv, &qcv, a, c, &jobs))
             };
-            let section3 = middles.and_then(|((p0, p1), (q0, q1))| {
-                let sep = separation_of_chains::<K>(&pcv[p0..=p1], &qcv[q0..=q1], a, c).ok()?;
-                Some((sep, (p0, p1), (q0, q1)))
-            });
-            match section3 {
+            match found {
+                Some(found) => {
+                    stats.subproblems_section3 += 1;
+                    for (fp, fq, f) in found {
+                        fold(fp, fq, f);
+                    }
+                }
                 None => {
                     stats.subproblems_scanned += 1;
-                    scanned(&pcv, &qcv, (0, 0));
-                }
-                Some((sep, (p0, p1), (q0, q1))) => {
-                    stats.subproblems_section3 += 1;
-                    let (pl, ql) = (pcv.len() - 1, qcv.len() - 1);
-                    // The peeled ends against the rest: `P`'s against all of `Q_i`, `Q`'s against the
-                    // middle of `P_i`, so every pair of edges is in one of the five parts.
-                    if p0 > 0 {
-                        scanned(&pcv[..=p0], &qcv, (0, 0));
-                    }
-                    if p1 < pl {
-                        scanned(&pcv[p1..], &qcv, (p1, 0));
-                    }
-                    if q0 > 0 {
-                        scanned(&pcv[p0..=p1], &qcv[..=q0], (p0, 0));
-                    }
-                    if q1 < ql {
-                        scanned(&pcv[p0..=p1], &qcv[q1..], (p0, q1));
-                    }
-                    fold(
-                        sep.pair.feature_p,
-                        sep.pair.feature_q,
-                        (p0, q0),
-                        Ok(sep.pair),
-                    );
+                    let w = scan_part::<K>(&pcv, &qcv);
+                    let (fp, fq) = w.features();
+                    fold(fp, fq, Err(w));
                 }
             }
         }
     }
+}
+
+/// The exact scan of two parts: pruned by bounding boxes when large (the containing case's long
+/// subchains), with the same answer.
+fn scan_part<K: Kernel>(p: &[DVec2], q: &[DVec2]) -> Winner {
+    if p.len() * q.len() > 256 {
+        scan_pruned_winner::<K>(p, q, true)
+    } else {
+        scan_winner::<K>(p, q, true)
+    }
+}
+
+/// A candidate of one subproblem, in features of its subchains: a pair section 3 built or a
+/// scan's winner.
+type Candidate = (Feature, Feature, Result<ClosestPair, Winner>);
+
+/// Runs `jobs` on the subchains `p`, `q` (line through `a`, `c`): every candidate, in the
+/// subchains' features; `None` when section 3 rejects a part (the caller scans the subproblem).
+fn execute<K: Kernel>(
+    p: &[DVec2],
+    q: &[DVec2],
+    a: DVec2,
+    c: DVec2,
+    jobs: &Jobs,
+) -> Option<Vec<Candidate>> {
+    let shift = |f: Feature, by: usize| match f {
+        Feature::Vertex(k) => Feature::Vertex(k + by),
+        Feature::Edge(k) => Feature::Edge(k + by),
+    };
+    let mut out = Vec::with_capacity(jobs.section3.len() + jobs.scans.len());
+    for &((p0, p1), (q0, q1)) in &jobs.section3 {
+        let sep = separation_of_chains::<K>(&p[p0..=p1], &q[q0..=q1], a, c).ok()?;
+        let (fp, fq) = (shift(sep.pair.feature_p, p0), shift(sep.pair.feature_q, q0));
+        out.push((fp, fq, Ok(sep.pair)));
+    }
+    for &((p0, p1), (q0, q1)) in &jobs.scans {
+        let w = scan_part::<K>(&p[p0..=p1], &q[q0..=q1]);
+        let (fp, fq) = w.features();
+        out.push((shift(fp, p0), shift(fq, q0), Err(w)));
+    }
+    Some(out)
+}
+
+/// How one subproblem is solved without scanning it whole: section 3 on pairs of parts (`P` range,
+/// `Q` range, inclusive, within the subchains) and exact scans of the rest.
+struct Jobs {
+    section3: Vec<((usize, usize), (usize, usize))>,
+    scans: Vec<((usize, usize), (usize, usize))>,
+}
+
+/// A partial Step G (docs/algorithms/separator.md), `O(|P_i| + |Q_i|)` orientation tests; `None`
+/// when the subproblem is to be scanned whole.
+///
+/// 1. **Peeled ends.** When the only vertices across the line through `a`, `c` are ends of the
+///    subchains (a subchain widened to the whole edge its cut falls in crosses the line there; see
+///    [`peeled`]), section 3 takes the middles and the peeled ends are scanned against the other
+///    subchain (`P`'s against all of `Q_i`, `Q`'s against `P`'s middle): every pair of edges is in one
+///    of the five parts, whichever side each chain is on.
+/// 2. **Runs.** Otherwise (a middle comes back across the line), for each of the two assignments
+///    of sides: the maximal runs of vertices of each subchain not strictly on its wrong side, section
+///    3 on every pair of runs, and every edge with exactly one end strictly on the wrong side scanned
+///    against the whole other subchain (edges with both ends there lie wholly across the line). Every
+///    pair Lemma 1 assigns to the subproblem meets `l_i` (notes 4.8), so its points lie in opposite
+///    closed half-planes of the line: one of the two assignments holds it, in a pair of runs or a
+///    crossing edge, and every pair either assignment evaluates is a pair of boundary points, so the
+///    minimum is still `σ`. Runs are not joined across the gaps (no fake edges). Taken when each
+///    chain has at most [`MAX_RUNS`] runs and [`MAX_CROSSINGS`] crossing edges per assignment, so the
+///    work stays `O(|P_i| + |Q_i|)`; clip points (section 3 on gapped chains) would lift the bounds.
+fn split<K: Kernel>(p: &[DVec2], q: &[DVec2], a: DVec2, c: DVec2) -> Option<Jobs> {
+    if let Some(((p0, p1), (q0, q1))) = peeled::<K>(p, q, a, c) {
+        let (pl, ql) = (p.len() - 1, q.len() - 1);
+        let mut scans = Vec::new();
+        if p0 > 0 {
+            scans.push(((0, p0), (0, ql)));
+        }
+        if p1 < pl {
+            scans.push(((p1, pl), (0, ql)));
+        }
+        if q0 > 0 {
+            scans.push(((p0, p1), (0, q0)));
+        }
+        if q1 < ql {
+            scans.push(((p0, p1), (q1, ql)));
+        }
+        return Some(Jobs {
+            section3: vec![((p0, p1), (q0, q1))],
+            scans,
+        });
+    }
+    let mut jobs = Jobs {
+        section3: Vec::new(),
+        scans: Vec::new(),
+    };
+    for (wp, wq) in [
+        (Orientation::Clockwise, Orientation::CounterClockwise),
+        (Orientation::CounterClockwise, Orientation::Clockwise),
+    ] {
+        let (rp, cp) = runs::<K>(p, a, c, wp)?;
+        let (rq, cq) = runs::<K>(q, a, c, wq)?;
+        for &x in &rp {
+            for &y in &rq {
+                jobs.section3.push((x, y));
+            }
+        }
+        jobs.scans
+            .extend(cp.iter().map(|&k| ((k, k + 1), (0, q.len() - 1))));
+        jobs.scans
+            .extend(cq.iter().map(|&k| ((0, p.len() - 1), (k, k + 1))));
+    }
+    Some(jobs)
+}
+
+/// Runs per chain and side assignment that [`split`] gives to section 3.
+const MAX_RUNS: usize = 4;
+/// Crossing edges per chain and side assignment that [`split`] scans.
+const MAX_CROSSINGS: usize = 8;
+
+/// Inclusive index ranges of a chain's runs, and the first vertices of its crossing edges.
+type Runs = (Vec<(usize, usize)>, Vec<usize>);
+
+/// The maximal runs of vertices of `chain` not strictly on the side `wrong` of the line through `a`,
+/// `c`, and the edges (by their first vertex) with exactly one end strictly there; `None` when there
+/// are more than [`MAX_RUNS`] runs or [`MAX_CROSSINGS`] such edges. `O(n)` orientation tests.
+fn runs<K: Kernel>(chain: &[DVec2], a: DVec2, c: DVec2, wrong: Orientation) -> Option<Runs> {
+    let (mut runs, mut crossing) = (Vec::new(), Vec::new());
+    let mut start: Option<usize> = None;
+    let mut prev_bad = None;
+    for (k, v) in chain.iter().enumerate() {
+        let bad = K::orient(a, c, *v) == wrong;
+        if prev_bad.is_some_and(|b| b != bad) {
+            crossing.push(k - 1);
+        }
+        match (bad, start) {
+            (false, None) => start = Some(k),
+            (true, Some(s)) => {
+                runs.push((s, k - 1));
+                start = None;
+            }
+            _ => {}
+        }
+        prev_bad = Some(bad);
+        if runs.len() > MAX_RUNS || crossing.len() > MAX_CROSSINGS {
+            return None;
+        }
+    }
+    if let Some(s) = start {
+        runs.push((s, chain.len() - 1));
+    }
+    (runs.len() <= MAX_RUNS).then_some((runs, crossing))
 }
 
 /// Subproblems with at most this many vertex pairs are scanned without trying section 3.
@@ -2072,6 +2190,64 @@ mod tests {
             }
         }
         None
+    }
+
+    /// `split` on its own: two disjoint sub-chains of an interlocked pair and a line through a
+    /// vertex of their brute-force closest pair, in a random direction, so that the chains cross
+    /// the line anywhere but the closest pair is in opposite closed half-planes (the condition Lemma
+    /// 1 guarantees): the jobs' best candidate is `σ` exactly. Counts the multi-run splits so that
+    /// the second route is exercised, not only the peeled one.
+    #[test]
+    fn split_keeps_every_pair_across_its_line() {
+        let (mut tried, mut multi, mut whole) = (0, 0, 0);
+        for seed in 0..3000u64 {
+            let Some((p, q)) = family_pair(seed) else {
+                continue;
+            };
+            let mut rng = SplitMix64::new(seed ^ 0x5b11);
+            let sub = |rng: &mut SplitMix64, v: &[DVec2]| {
+                let (s, len) = (rng.index(v.len()), 2 + rng.index(v.len() - 1));
+                (0..len).map(|t| v[(s + t) % v.len()]).collect::<Vec<_>>()
+            };
+            let (pc, qc) = (sub(&mut rng, p.vertices()), sub(&mut rng, q.vertices()));
+            let brute = separation_brute::<Robust>(&pc, &qc).unwrap();
+            let anchor = match (brute.feature_p, brute.feature_q) {
+                (Feature::Vertex(i), _) => pc[i],
+                (_, Feature::Vertex(j)) => qc[j],
+                _ => unreachable!("a closest pair has a vertex"),
+            };
+            let dir = loop {
+                let d = DVec2::new(rng.range_i64(-3, 4) as f64, rng.range_i64(-3, 4) as f64);
+                if d != DVec2::ZERO {
+                    break d;
+                }
+            };
+            let Some(jobs) = split::<Robust>(&pc, &qc, anchor, anchor + dir) else {
+                whole += 1;
+                continue;
+            };
+            tried += 1;
+            if jobs.section3.len() > 1 {
+                multi += 1;
+            }
+            let found = execute::<Robust>(&pc, &qc, anchor, anchor + dir, &jobs)
+                .expect("section 3 accepts every part split hands it");
+            let best = found
+                .iter()
+                .map(|(fp, fq, _)| dist_of(&pc, &qc, *fp, *fq))
+                .min_by(|x, y| Robust::cmp_dist2(*x, *y))
+                .unwrap();
+            let bd = dist_of(&pc, &qc, brute.feature_p, brute.feature_q);
+            assert_eq!(
+                Robust::cmp_dist2(best, bd),
+                Ordering::Equal,
+                "seed {seed}: {pc:?} {qc:?} line {anchor:?} + {dir:?}"
+            );
+        }
+        assert!(
+            tried > 1000 && multi > 200,
+            "{tried} split, {multi} multi-run, {whole} whole"
+        );
     }
 
     /// The checker on interlocked pairs of every generator family (deep comb pockets, spirals, 2-opt
