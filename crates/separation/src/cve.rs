@@ -175,7 +175,7 @@ impl<K: Kernel> CveMatrix<K> {
 
     /// `sign(g)` at a point of this chain.
     fn eval(&self, g: &Affine, x: &EdgePoint) -> Sign {
-        self.edge(x.edge).eval::<K>(g, &x.param)
+        self.edge(x.edge).eval_within::<K>(g, &x.param)
     }
 
     /// `H(x)` against `H(t)` for a point `x` of this chain and an input point `t`.
@@ -381,7 +381,10 @@ impl<K: Kernel> CveMatrix<K> {
             }
         }
         for g in conds.iter().flatten() {
-            let (gb, gt) = (e.eval::<K>(g, &pc.bot), e.eval::<K>(g, &pc.top));
+            let (gb, gt) = (
+                e.eval_within::<K>(g, &pc.bot),
+                e.eval_within::<K>(g, &pc.top),
+            );
             let ok = |s: Sign| s != Sign::Negative;
             match (ok(gb), ok(gt)) {
                 (true, true) => {}

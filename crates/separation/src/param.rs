@@ -336,6 +336,22 @@ impl Edge {
         if g.neg { raw.reversed() } else { raw }
     }
 
+    /// [`Self::eval`] at a parameter that lies on the closed edge (every piece end, envelope range
+    /// end and chain point does; the feet and the separator's lines do not): when `g` has one strict
+    /// sign at both ends it has that sign on the whole edge (it is affine), so a root is placed by two
+    /// degree-2 signs instead of the degree-4 root comparison.
+    pub(crate) fn eval_within<K: Kernel>(&self, g: &Affine, t: &Param) -> Sign {
+        if let Param::Root(f) = t
+            && !f.same_root(g)
+        {
+            let ga = g.raw_at::<K>(self.a);
+            if ga != Sign::Zero && ga == g.raw_at::<K>(self.b) {
+                return if g.neg { ga.reversed() } else { ga };
+            }
+        }
+        self.eval::<K>(g, t)
+    }
+
     /// `sign(root_f − e)` for the edge end `e` (start: `t = 0`, end: `t = 1`): `sign(f(e)) ·
     /// sign(f(a) − f(b))`, negated for the start (degree 2).
     fn root_vs_end<K: Kernel>(&self, f: &Affine, at_end: bool) -> Ordering {

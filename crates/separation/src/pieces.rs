@@ -58,7 +58,10 @@ fn depth_rule<K: Kernel>(
             continue;
         };
         let g = frame.depth_minus(t);
-        let (gb, gt) = (e.eval::<K>(&g, &s.bot), e.eval::<K>(&g, &s.top));
+        let (gb, gt) = (
+            e.eval_within::<K>(&g, &s.bot),
+            e.eval_within::<K>(&g, &s.top),
+        );
         // Split only where the sign strictly changes; a zero at one end is that end itself, and a
         // single point keeps the tangent of the rest of the piece (it is also a piece end of the
         // neighbour or a vertex, tested there).
@@ -132,11 +135,11 @@ pub(crate) fn pieces<K: Kernel>(prep: &Prepared, frame: Frame) -> Vec<Piece> {
             for t in (1..stack.len()).rev() {
                 let (cm, cm1) = (pts[stack[t]], pts[stack[t - 1]]);
                 let pops = frame.orient_x_first(cm, cm1);
-                let sa = e.eval::<K>(&pops, &lo);
+                let sa = e.eval_within::<K>(&pops, &lo);
                 if sa == Sign::Negative {
                     break; // the pair does not pop at the bottom end
                 }
-                let sb = e.eval::<K>(&pops, &hi);
+                let sb = e.eval_within::<K>(&pops, &hi);
                 if sb != Sign::Negative {
                     cur = Some(cm1); // pops on all of the current range
                     continue;
@@ -189,11 +192,11 @@ pub(crate) fn pieces<K: Kernel>(prep: &Prepared, frame: Frame) -> Vec<Piece> {
             for t in (1..stack.len()).rev() {
                 let (dm, dm1) = (pts[stack[t]], pts[stack[t - 1]]);
                 let pops = frame.orient_x_first(dm, dm1);
-                let sb = e.eval::<K>(&pops, &hi);
+                let sb = e.eval_within::<K>(&pops, &hi);
                 if sb == Sign::Positive {
                     break;
                 }
-                let sa = e.eval::<K>(&pops, &lo);
+                let sa = e.eval_within::<K>(&pops, &lo);
                 if sa != Sign::Positive {
                     cur = Some(dm1);
                     continue;
@@ -309,7 +312,7 @@ fn clip_and_push<K: Kernel>(
             v1: other,
             neg: true,
         };
-        let (gb, gt) = (e.eval::<K>(&g, &bot), e.eval::<K>(&g, &top));
+        let (gb, gt) = (e.eval_within::<K>(&g, &bot), e.eval_within::<K>(&g, &top));
         let inside = |s: Sign| s != Sign::Negative;
         // `g` decreases away from `v`: the piece's end nearer `v` is tested first.
         let (new_bot, new_top) = match (v_is_b, inside(gb), inside(gt)) {
