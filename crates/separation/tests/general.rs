@@ -107,15 +107,26 @@ fn polygon(rng: &mut SplitMix64, size: usize) -> (Vec<I>, &'static str) {
     }
 }
 
+/// Where [`polygon_pair`] puts `Q`.
+#[derive(Clone, Copy, Debug)]
+enum Place {
+    /// Along the outward normal of the line to the least integer step strictly beyond it, plus
+    /// this many steps.
+    Beyond(i64),
+    /// Exactly onto the line (its extreme vertices on it: a lattice step along the line's primitive
+    /// normal direction, by Bézout), then slid along the line so that the two touching sets are
+    /// this many (≥ 1) lattice steps apart, above or below: both chains touch the line and the
+    /// polygons are disjoint.
+    Touching(i64),
+}
+
 /// Two polygons with disjoint hulls, the line through a random edge of `P`'s hull (`P` touches
-/// it), `Q` translated along the outward normal to the least integer step strictly beyond plus
-/// `extra` steps, then everything rotated by an integer rotation and offset.
-#[allow(clippy::too_many_arguments, reason = "a test generator")]
+/// it), `Q` placed as `place` says, then everything rotated by an integer rotation and offset,
+/// cut into open sub-chains or closed, reversed and swapped at random.
 fn polygon_pair(
     rng: &mut SplitMix64,
-    np: usize,
-    nq: usize,
-    extra: i64,
+    (np, nq): (usize, usize),
+    place: Place,
     rot: I,
     offset: DVec2,
     open: bool,
@@ -125,6 +136,19 @@ fn polygon_pair(
     let h = hull(&p);
     let i = rng.index(h.len());
     let (h1, h2) = (h[i], h[(i + 1) % h.len()]);
+    let (q, how) = match place {
+        Place::Beyond(extra) => (beyond(rng, q, (h1, h2), extra), format!("extra {extra}")),
+        Place::Touching(gap) => (
+            touching(rng, &p, q, (h1, h2), gap),
+            format!("touching, gap {gap}"),
+        ),
+    };
+    let name = format!("{kp}({}) vs {kq}({}) {how}", p.len(), q.len());
+    finish(rng, &p, &q, (h1, h2), rot, offset, open, name)
+}
+
+/// `Q` moved beyond the line through `h1`, `h2` ([`Place::Beyond`]).
+fn beyond(rng: &mut SplitMix64, q: Vec<I>, (h1, h2): (I, I), extra: i64) -> Vec<I> {
     let d = (h2.0 - h1.0, h2.1 - h1.1);
     let n = (d.1, -d.0); // right of h1 → h2: outside P
     let d2 = i128::from(d.0) * i128::from(d.0) + i128::from(d.1) * i128::from(d.1);
@@ -139,12 +163,10 @@ fn polygon_pair(
         .max()
         .unwrap_or(0);
     let k = (need.max(0) as i64) + extra;
-    let q: Vec<I> = moved
+    moved
         .iter()
         .map(|&v| (v.0 + k * n.0, v.1 + k * n.1))
-        .collect();
-    let name = format!("{kp}({}) vs {kq}({}) extra {extra}", p.len(), q.len());
-    finish(rng, &p, &q, (h1, h2), rot, offset, open, name)
+        .collect()
 }
 
 /// Integers `(x, y)` with `a·y − b·x = gcd(a, b)` (extended Euclid), for `(a, b) ≠ (0, 0)`.
@@ -163,25 +185,8 @@ fn bezout(a: i64, b: i64) -> (i64, i64, i64) {
     (-w0, u0, r0)
 }
 
-/// Two polygons touching one line from both sides: the line through a random edge of `P`'s hull,
-/// `Q` translated exactly onto it (its extreme vertices on the line: a lattice step along the
-/// line's primitive normal direction, by Bézout), then slid along the line so that the two
-/// touching sets are `gap ≥ 1` lattice steps apart, above or below (the polygons are disjoint).
-/// Then the same rotation, offset, cutting and shuffling as [`polygon_pair`].
-fn touching_pair(
-    rng: &mut SplitMix64,
-    np: usize,
-    nq: usize,
-    gap: i64,
-    rot: I,
-    offset: DVec2,
-    open: bool,
-) -> Case {
-    let (p, kp) = polygon(rng, np);
-    let (q, kq) = polygon(rng, nq);
-    let h = hull(&p);
-    let i = rng.index(h.len());
-    let (h1, h2) = (h[i], h[(i + 1) % h.len()]);
+/// `Q` moved onto the line through `h1`, `h2` of `P`'s hull and along it ([`Place::Touching`]).
+fn touching(rng: &mut SplitMix64, p: &[I], q: Vec<I>, (h1, h2): (I, I), gap: i64) -> Vec<I> {
     let (t0, t1, g) = bezout(h2.0 - h1.0, h2.1 - h1.1);
     let dp = ((h2.0 - h1.0) / g, (h2.1 - h1.1) / g);
     // cross(dp, v − h1) ≥ 0 on P's side; Q's largest value is brought to 0.
@@ -211,7 +216,7 @@ fn touching_pair(
             .collect();
         (*on.iter().min().unwrap(), *on.iter().max().unwrap())
     };
-    let ((pmin, pmax), (qmin, qmax)) = (range(&p), range(&q));
+    let ((pmin, pmax), (qmin, qmax)) = (range(p), range(&q));
     let step = dp.0 * dp.0 + dp.1 * dp.1;
     // Slide by m·dp: `along` moves by m·step.
     let m = if rng.coin() {
@@ -219,12 +224,9 @@ fn touching_pair(
     } else {
         -((qmax - pmin).div_euclid(step) + gap)
     };
-    let q: Vec<I> = q
-        .iter()
+    q.iter()
         .map(|&v| (v.0 + m * dp.0, v.1 + m * dp.1))
-        .collect();
-    let name = format!("{kp}({}) vs {kq}({}) touching, gap {gap}", p.len(), q.len());
-    finish(rng, &p, &q, (h1, h2), rot, offset, open, name)
+        .collect()
 }
 
 /// Places both polygons (integer rotation, offset), cuts open sub-chains or closes them, reverses
@@ -368,7 +370,7 @@ fn agree<K: Kernel>(c: &Case, check_matrices: bool) {
     }
 }
 
-/// Both chains touching the line (`touching_pair`), closed and open, every matrix checked on the
+/// Both chains touching the line (`Place::Touching`), closed and open, every matrix checked on the
 /// small ones: the pairs on the line come from `on_the_line`, every other pair from the wedges.
 #[test]
 fn chains_touching_the_line_from_both_sides() {
@@ -383,7 +385,14 @@ fn chains_touching_the_line_from_both_sides() {
             DVec2::ZERO
         };
         let gap = 1 + rng.range_i64(0, 3);
-        let c = touching_pair(&mut rng, size, size, gap, rot, off, round % 2 == 1);
+        let c = polygon_pair(
+            &mut rng,
+            (size, size),
+            Place::Touching(gap),
+            rot,
+            off,
+            round % 2 == 1,
+        );
         agree::<Robust>(&c, size <= 10);
         if far {
             agree::<Exact>(&c, false);
@@ -401,7 +410,14 @@ fn closed_polygons_small_with_matrix_checks() {
         for _ in 0..120 {
             let rot = ROTS[rng.index(ROTS.len())];
             let extra = rng.range_i64(0, 3);
-            let c = polygon_pair(&mut rng, size, size, extra, rot, DVec2::ZERO, false);
+            let c = polygon_pair(
+                &mut rng,
+                (size, size),
+                Place::Beyond(extra),
+                rot,
+                DVec2::ZERO,
+                false,
+            );
             agree::<Robust>(&c, c.p.len() + c.q.len() <= 60);
             ran += 1;
         }
@@ -416,7 +432,14 @@ fn open_subchains_of_polygons() {
         for _ in 0..120 {
             let rot = ROTS[rng.index(ROTS.len())];
             let extra = rng.range_i64(0, 3);
-            let c = polygon_pair(&mut rng, size, size, extra, rot, DVec2::ZERO, true);
+            let c = polygon_pair(
+                &mut rng,
+                (size, size),
+                Place::Beyond(extra),
+                rot,
+                DVec2::ZERO,
+                true,
+            );
             agree::<Robust>(&c, c.p.len() + c.q.len() <= 50);
         }
     }
@@ -432,9 +455,8 @@ fn exact_kernel_far_from_the_origin() {
             let extra = rng.range_i64(0, 2);
             let c = polygon_pair(
                 &mut rng,
-                size,
-                size,
-                extra,
+                (size, size),
+                Place::Beyond(extra),
                 rot,
                 DVec2::new(1e12, -3e12),
                 open,
@@ -586,7 +608,14 @@ fn combs_tip_to_tip_few_ulps_apart() {
 fn larger_spirals_and_combs_against_the_brute_force() {
     let mut rng = SplitMix64::new(0x606);
     for _ in 0..12 {
-        let c = polygon_pair(&mut rng, 60, 60, 1, (3, 4), DVec2::new(1e12, 1e12), false);
+        let c = polygon_pair(
+            &mut rng,
+            (60, 60),
+            Place::Beyond(1),
+            (3, 4),
+            DVec2::new(1e12, 1e12),
+            false,
+        );
         agree::<Robust>(&c, false);
     }
 }
@@ -599,9 +628,8 @@ fn fast_kernel_terminates() {
             let open = rng.coin();
             let c = polygon_pair(
                 &mut rng,
-                size,
-                size,
-                0,
+                (size, size),
+                Place::Beyond(0),
                 (5, -12),
                 DVec2::new(1e12, -1e12),
                 open,
@@ -652,27 +680,20 @@ proptest! {
     fn proptest_polygons_agree_with_oracle(seed in any::<u64>(), size in 3usize..16,
                                            open in any::<bool>(), far in any::<bool>(),
                                            extra in 0i64..3) {
-        agree::<Robust>(&proptest_case(seed, size, open, far, extra), true);
+        agree::<Robust>(&proptest_case(seed, size, open, far, Place::Beyond(extra)), true);
     }
-}
 
-proptest! {
-    #![proptest_config(ProptestConfig::with_cases(300))]
-    /// Both chains touching the line: σ, its features, the brute force, the envelopes and every
-    /// matrix, as above.
+    /// The same with both chains touching the line.
     #[test]
     fn proptest_chains_touching_from_both_sides(seed in any::<u64>(), size in 3usize..16,
                                                 open in any::<bool>(), far in any::<bool>(),
                                                 gap in 1i64..4) {
-        let mut rng = SplitMix64::new(seed);
-        let rot = ROTS[rng.index(ROTS.len())];
-        let off = if far { DVec2::new(-1e12, 4e12) } else { DVec2::ZERO };
-        agree::<Robust>(&touching_pair(&mut rng, size, size, gap, rot, off, open), true);
+        agree::<Robust>(&proptest_case(seed, size, open, far, Place::Touching(gap)), true);
     }
 }
 
 /// The case the proptest draws for its parameters.
-fn proptest_case(seed: u64, size: usize, open: bool, far: bool, extra: i64) -> Case {
+fn proptest_case(seed: u64, size: usize, open: bool, far: bool, place: Place) -> Case {
     let mut rng = SplitMix64::new(seed);
     let rot = ROTS[rng.index(ROTS.len())];
     let off = if far {
@@ -680,7 +701,7 @@ fn proptest_case(seed: u64, size: usize, open: bool, far: bool, extra: i64) -> C
     } else {
         DVec2::ZERO
     };
-    polygon_pair(&mut rng, size, size, extra, rot, off, open)
+    polygon_pair(&mut rng, (size, size), place, rot, off, open)
 }
 
 /// The envelope against an independent exact definition (rationals, line `x = 0`, chains on
@@ -844,7 +865,13 @@ fn regression_whole_edge_entries_broke_total_monotonicity() {
             b: DVec2::Y,
             name: "monotone with a run".into(),
         },
-        proptest_case(14_620_136_695_611_095_605, 10, true, false, 2),
+        proptest_case(
+            14_620_136_695_611_095_605,
+            10,
+            true,
+            false,
+            Place::Beyond(2),
+        ),
     ] {
         // σ (oracle), features, envelopes, and every matrix: totally monotone, SMAWK = brute force.
         agree::<Robust>(&c, true);
