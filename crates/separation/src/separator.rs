@@ -2192,62 +2192,82 @@ mod tests {
         None
     }
 
-    /// `split` on its own: two disjoint sub-chains of an interlocked pair and a line through a
-    /// vertex of their brute-force closest pair, in a random direction, so that the chains cross
-    /// the line anywhere but the closest pair is in opposite closed half-planes (the condition Lemma
-    /// 1 guarantees): the jobs' best candidate is `σ` exactly. Counts the multi-run splits so that
-    /// the second route is exercised, not only the peeled one.
+    /// `split` on its own, for one seed: two disjoint sub-chains of an interlocked pair and a line
+    /// through a vertex of their brute-force closest pair, in a random lattice direction, so that
+    /// the chains cross the line anywhere but the closest pair is in opposite closed half-planes
+    /// (the condition Lemma 1 guarantees): the jobs' best candidate is `σ` exactly, under `K`.
+    /// `None` when the seed draws no pair; else whether `split` split (`Some(None)`: it declined)
+    /// into several runs.
+    fn check_split<K: Kernel>(seed: u64) -> Option<Option<bool>> {
+        let (p, q) = family_pair(seed)?;
+        let mut rng = SplitMix64::new(seed ^ 0x5b11);
+        let sub = |rng: &mut SplitMix64, v: &[DVec2]| {
+            let (s, len) = (rng.index(v.len()), 2 + rng.index(v.len() - 1));
+            (0..len).map(|t| v[(s + t) % v.len()]).collect::<Vec<_>>()
+        };
+        let (pc, qc) = (sub(&mut rng, p.vertices()), sub(&mut rng, q.vertices()));
+        let brute = separation_brute::<K>(&pc, &qc).unwrap();
+        let anchor = match (brute.feature_p, brute.feature_q) {
+            (Feature::Vertex(i), _) => pc[i],
+            (_, Feature::Vertex(j)) => qc[j],
+            _ => unreachable!("a closest pair has a vertex"),
+        };
+        let dir = loop {
+            let d = DVec2::new(rng.range_i64(-3, 4) as f64, rng.range_i64(-3, 4) as f64);
+            if d != DVec2::ZERO {
+                break d;
+            }
+        };
+        let Some(jobs) = split::<K>(&pc, &qc, anchor, anchor + dir) else {
+            return Some(None);
+        };
+        let found = execute::<K>(&pc, &qc, anchor, anchor + dir, &jobs)
+            .expect("section 3 accepts every part split hands it");
+        let best = found
+            .iter()
+            .map(|(fp, fq, _)| dist_of(&pc, &qc, *fp, *fq))
+            .min_by(|x, y| K::cmp_dist2(*x, *y))
+            .unwrap();
+        let bd = dist_of(&pc, &qc, brute.feature_p, brute.feature_q);
+        assert_eq!(
+            K::cmp_dist2(best, bd),
+            Ordering::Equal,
+            "seed {seed}: {pc:?} {qc:?} line {anchor:?} + {dir:?}"
+        );
+        Some(Some(jobs.section3.len() > 1))
+    }
+
+    /// [`check_split`] on 3,000 seeds under Robust and 300 under Exact; counts the multi-run splits
+    /// so that the second route is exercised, not only the peeled one.
     #[test]
     fn split_keeps_every_pair_across_its_line() {
         let (mut tried, mut multi, mut whole) = (0, 0, 0);
         for seed in 0..3000u64 {
-            let Some((p, q)) = family_pair(seed) else {
-                continue;
-            };
-            let mut rng = SplitMix64::new(seed ^ 0x5b11);
-            let sub = |rng: &mut SplitMix64, v: &[DVec2]| {
-                let (s, len) = (rng.index(v.len()), 2 + rng.index(v.len() - 1));
-                (0..len).map(|t| v[(s + t) % v.len()]).collect::<Vec<_>>()
-            };
-            let (pc, qc) = (sub(&mut rng, p.vertices()), sub(&mut rng, q.vertices()));
-            let brute = separation_brute::<Robust>(&pc, &qc).unwrap();
-            let anchor = match (brute.feature_p, brute.feature_q) {
-                (Feature::Vertex(i), _) => pc[i],
-                (_, Feature::Vertex(j)) => qc[j],
-                _ => unreachable!("a closest pair has a vertex"),
-            };
-            let dir = loop {
-                let d = DVec2::new(rng.range_i64(-3, 4) as f64, rng.range_i64(-3, 4) as f64);
-                if d != DVec2::ZERO {
-                    break d;
+            match check_split::<Robust>(seed) {
+                Some(Some(m)) => {
+                    tried += 1;
+                    multi += usize::from(m);
                 }
-            };
-            let Some(jobs) = split::<Robust>(&pc, &qc, anchor, anchor + dir) else {
-                whole += 1;
-                continue;
-            };
-            tried += 1;
-            if jobs.section3.len() > 1 {
-                multi += 1;
+                Some(None) => whole += 1,
+                None => {}
             }
-            let found = execute::<Robust>(&pc, &qc, anchor, anchor + dir, &jobs)
-                .expect("section 3 accepts every part split hands it");
-            let best = found
-                .iter()
-                .map(|(fp, fq, _)| dist_of(&pc, &qc, *fp, *fq))
-                .min_by(|x, y| Robust::cmp_dist2(*x, *y))
-                .unwrap();
-            let bd = dist_of(&pc, &qc, brute.feature_p, brute.feature_q);
-            assert_eq!(
-                Robust::cmp_dist2(best, bd),
-                Ordering::Equal,
-                "seed {seed}: {pc:?} {qc:?} line {anchor:?} + {dir:?}"
-            );
+        }
+        for seed in 0..300u64 {
+            check_split::<Exact>(seed);
         }
         assert!(
             tried > 1000 && multi > 200,
             "{tried} split, {multi} multi-run, {whole} whole"
         );
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(200))]
+        /// [`check_split`] on random seeds.
+        #[test]
+        fn proptest_split_keeps_every_pair_across_its_line(seed in proptest::prelude::any::<u64>()) {
+            check_split::<Robust>(seed);
+        }
     }
 
     /// The checker on interlocked pairs of every generator family (deep comb pockets, spirals, 2-opt
