@@ -14,9 +14,10 @@
 //!   amount below 1/64 in x and y (clearances between 1/8 − 1/32 and 1/8 + 1/32, no exact ties);
 //! - `polygons/pocket`: a spiky star (`N/2` vertices, radii 1 and 0.5) in the pocket of a "C" (an
 //!   outer arc of radius 4 and a wavy inner arc of radii 2 and 2.5, `N/2` vertices, open over half a
-//!   radian): one hull inside the other, the separator's containing case (two passes). Up to 4,096
-//!   vertices only: the subproblems are few and large and are scanned, so the query grows
-//!   quadratically there (see `docs/algorithms/separator.md`).
+//!   radian): one hull inside the other, the separator's containing case (two passes). Up to
+//!   131,072 vertices: its few large subproblems go to section 3 (`docs/algorithms/separator.md`);
+//! - `polygons/interlocked_spirals`: two spiral arms turned half a turn from each other, nested one
+//!   unit apart (clearance 1/2, up to six turns): the separator's long spiral corridor.
 //!
 //! Series, per `N`:
 //! - `validate`: building both `SimplePolygon`s (exact simplicity sweep), which a caller does once;
@@ -42,7 +43,9 @@ use glam::DVec2;
 use parry2d_f64::math::{Pose, Vector};
 use parry2d_f64::query;
 use parry2d_f64::shape::Polyline;
-use polydist_benches::{interlocked_combs, interlocked_combs_jittered, pocket, sawteeth};
+use polydist_benches::{
+    interlocked_combs, interlocked_combs_jittered, interlocked_spirals, pocket, sawteeth,
+};
 use polydist_oracle::SplitMix64;
 use polydist_polygon::SimplePolygon;
 use polydist_predicates::{Exact, Fast, Kernel, Robust};
@@ -241,6 +244,12 @@ fn benches() {
         &mut c,
         "polygons/interlocked_combs_jittered",
         interlocked_combs_jittered,
+        usize::MAX,
+    );
+    run(
+        &mut c,
+        "polygons/interlocked_spirals",
+        interlocked_spirals,
         usize::MAX,
     );
     // Up to 131,072: its subproblems go to section 3 since 2026-11-26 (docs/algorithms/separator.md);

@@ -30,6 +30,26 @@ pub fn interlocked_combs_jittered(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
     (jitter(&a), jitter(&b))
 }
 
+/// Two interleaved spiral arms, `n` vertices in all: arm `A` is a strip of half-width 1/4 around
+/// the spiral `r = θ/π`, `θ` from `π` over up to six turns (fewer at small `n`, so that every turn
+/// keeps at least 24 vertices a side), and arm `B` is `A` turned by half a turn, so the arms nest one
+/// unit apart radially (clearance 1/2) and each lies in the other's hull: an interlocked pair whose
+/// region between the facing chains is a long spiral corridor.
+pub fn interlocked_spirals(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
+    let m = (n / 4).max(8);
+    let turns = (m as f64 / 24.0).clamp(0.75, 6.0);
+    let (t0, t1) = (
+        std::f64::consts::PI,
+        std::f64::consts::PI * (1.0 + 2.0 * turns),
+    );
+    let at = |t: f64, w: f64| DVec2::new(t.cos(), t.sin()) * (t / std::f64::consts::PI + w);
+    let theta = |k: usize| t0 + (t1 - t0) * k as f64 / (m - 1) as f64;
+    let mut a: Vec<DVec2> = (0..m).map(|k| at(theta(k), 0.25)).collect();
+    a.extend((0..m).rev().map(|k| at(theta(k), -0.25)));
+    let b = a.iter().map(|&v| -v).collect();
+    (a, b)
+}
+
 /// A spiky star in the pocket of a "C" (see the module docs), `n` vertices in all.
 pub fn pocket(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
     let half = (n / 2).max(8);
