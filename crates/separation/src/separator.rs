@@ -1942,8 +1942,11 @@ mod tests {
                     ),
                 }
             }
-            // Fast: terminates without panicking.
-            let _ = build::<Fast>(&p, &q).map(|b| b.map(|b| solve::<Fast>(&p, &q, &b)));
+            // Fast: terminates without panicking, also with every subproblem offered to section 3.
+            if let Ok(Some(b)) = build::<Fast>(&p, &q) {
+                let _ = solve::<Fast>(&p, &q, &b);
+                let _ = solve_with::<Fast>(&p, &q, &b, 0);
+            }
             checked += 1;
         }
         assert!(
@@ -2413,7 +2416,10 @@ mod tests {
                     }
                 }
             }
-            let _ = build::<Fast>(&p, &q).map(|b| b.map(|b| solve::<Fast>(&p, &q, &b)));
+            if let Ok(Some(b)) = build::<Fast>(&p, &q) {
+                let _ = solve::<Fast>(&p, &q, &b);
+                let _ = solve_with::<Fast>(&p, &q, &b, 0);
+            }
         }
         eprintln!("annulus {annulus} other {other} only {only:?}");
         assert!(only[0] > 0 && only[1] > 0, "{only:?}");
