@@ -292,77 +292,12 @@ fn clip_and_push<K: Kernel>(
         });
         return;
     };
-    // A tangent point at an end `v` of the edge (on a convex corner of the envelope, the rule):
-    // `F(x) = (v − x)·(w − x)` with `v − x = −λu`, `u` from `v` to the other end, `λ ≥ 0`, so on
-    // the edge `F ≤ 0` exactly at `v` and where the affine `g(x) = (w − x)·u ≥ 0`: an interval
-    // from `v`, whose far end is the rational root of `g` (degree 2) instead of an irrational arc
-    // end (the degree-6 placements and the discriminant, which the star in a pocket drove into the
-    // exact stage at 131,072 vertices).
-    let at_end = [(h, l), (l, h)].into_iter().find_map(|(z, w)| {
-        (z == e.a)
-            .then_some((false, w))
-            .or_else(|| (z == e.b).then_some((true, w)))
-    });
-    if let Some((v_is_b, w)) = at_end {
-        let (v, other) = if v_is_b { (e.b, e.a) } else { (e.a, e.b) };
-        let g = Affine {
-            cross: false,
-            c: w,
-            v0: v,
-            v1: other,
-            neg: true,
-        };
-        let (gb, gt) = (e.eval_within::<K>(&g, &bot), e.eval_within::<K>(&g, &top));
-        let inside = |s: Sign| s != Sign::Negative;
-        // `g` decreases away from `v`: the piece's end nearer `v` is tested first.
-        let (new_bot, new_top) = match (v_is_b, inside(gb), inside(gt)) {
-            (false, _, true) | (true, true, _) => (bot, top),
-            (false, true, false) if gb == Sign::Zero => (bot, bot),
-            (false, true, false) => (bot, Param::Root(g)),
-            (true, false, true) if gt == Sign::Zero => (top, top),
-            (true, false, true) => (Param::Root(g), top),
-            // Only `v` itself, a vertex (a CVV candidate), or nothing: dropped as below.
-            _ => return,
-        };
-        push_unless_end_point::<K>(out, k, e, range, (new_bot, new_top), (hi, lo));
-        return;
-    }
-    if e.disc::<K>(h, l) == Sign::Negative {
-        return; // α < 90° on the whole line of the edge
-    }
-    let arc = |t: &Param| e.against_arc_ends::<K>(t, h, l, piece);
-    let (b1, b2) = arc(&bot);
-    let (t1, t2) = arc(&top);
-    if b2 == Ordering::Greater || t1 == Ordering::Less {
-        return; // the piece misses the arc
-    }
-    let new_bot = if b1 == Ordering::Less {
-        if t1 == Ordering::Equal {
-            top
-        } else {
-            Param::Clip {
-                h,
-                l,
-                hi: false,
-                piece,
-            }
-        }
-    } else {
-        bot
+    let clipped = match end_tangent(e, h, l) {
+        Some((v_is_b, w)) => clip_from_end::<K>(e, (bot, top), v_is_b, w),
+        None => clip_to_arc::<K>(e, (bot, top), h, l, piece),
     };
-    let new_top = if t2 == Ordering::Greater {
-        if b2 == Ordering::Equal {
-            bot
-        } else {
-            Param::Clip {
-                h,
-                l,
-                hi: true,
-                piece,
-            }
-        }
-    } else {
-        top
+    let Some((new_bot, new_top)) = clipped else {
+        return;
     };
     // A piece clipped down to one end of its edge is that vertex alone (typically `F` vanishing at
     // the edge's top because the top is its own tangent point `h`). The vertex is a CVV candidate, and
@@ -371,31 +306,110 @@ fn clip_and_push<K: Kernel>(
     // below (found by the soak test, see docs). Dropped.
     // The same holds at a shadow point or hidden vertex ending the edge's part on the envelope: it
     // is strictly dominated by the visible vertex at its height.
-    push_unless_end_point::<K>(out, k, e, range, (new_bot, new_top), (hi, lo));
+    push_unless_end_point::<K>(
+        out,
+        e,
+        range,
+        Piece {
+            edge: k,
+            bot: new_bot,
+            top: new_top,
+            hi,
+            lo,
+        },
+    );
+}
+
+/// A tangent point at an end `v` of the edge (on a convex corner of the envelope, the rule): whether
+/// `v` is the edge's end `b`, and the other tangent point `w`.
+fn end_tangent(e: &Edge, h: DVec2, l: DVec2) -> Option<(bool, DVec2)> {
+    [(h, l), (l, h)].into_iter().find_map(|(z, w)| {
+        (z == e.a)
+            .then_some((false, w))
+            .or_else(|| (z == e.b).then_some((true, w)))
+    })
+}
+
+/// [`clip_and_push`] with a tangent point at an end `v` of the edge: `F(x) = (v − x)·(w − x)` with
+/// `v − x = −λu`, `u` from `v` to the other end, `λ ≥ 0`, so on the edge `F ≤ 0` exactly at `v` and
+/// where the affine `g(x) = (w − x)·u ≥ 0`: an interval from `v`, whose far end is the rational root
+/// of `g` (degree 2) instead of an irrational arc end (the degree-6 placements and the
+/// discriminant, which the star in a pocket drove into the exact stage at 131,072 vertices). `None`
+/// when only `v` itself (a vertex, a CVV candidate) or nothing is left.
+fn clip_from_end<K: Kernel>(
+    e: &Edge,
+    (bot, top): (Param, Param),
+    v_is_b: bool,
+    w: DVec2,
+) -> Option<(Param, Param)> {
+    let (v, other) = if v_is_b { (e.b, e.a) } else { (e.a, e.b) };
+    let g = Affine {
+        cross: false,
+        c: w,
+        v0: v,
+        v1: other,
+        neg: true,
+    };
+    let (gb, gt) = (e.eval_within::<K>(&g, &bot), e.eval_within::<K>(&g, &top));
+    let inside = |s: Sign| s != Sign::Negative;
+    // `g` decreases away from `v`: the piece's end nearer `v` is tested first.
+    match (v_is_b, inside(gb), inside(gt)) {
+        (false, _, true) | (true, true, _) => Some((bot, top)),
+        (false, true, false) if gb == Sign::Zero => Some((bot, bot)),
+        (false, true, false) => Some((bot, Param::Root(g))),
+        (true, false, true) if gt == Sign::Zero => Some((top, top)),
+        (true, false, true) => Some((Param::Root(g), top)),
+        _ => None,
+    }
+}
+
+/// [`clip_and_push`] in general: the piece clipped to `[r_1, r_2]`, the roots of `F` for `(h, l)`
+/// kept symbolic (`Param::Clip` of piece `piece`); `None` when the discriminant is negative or the
+/// piece misses the arc.
+fn clip_to_arc<K: Kernel>(
+    e: &Edge,
+    (bot, top): (Param, Param),
+    h: DVec2,
+    l: DVec2,
+    piece: usize,
+) -> Option<(Param, Param)> {
+    if e.disc::<K>(h, l) == Sign::Negative {
+        return None; // α < 90° on the whole line of the edge
+    }
+    let arc = |t: &Param| e.against_arc_ends::<K>(t, h, l, piece);
+    let (b1, b2) = arc(&bot);
+    let (t1, t2) = arc(&top);
+    if b2 == Ordering::Greater || t1 == Ordering::Less {
+        return None; // the piece misses the arc
+    }
+    let end = |hi| Param::Clip { h, l, hi, piece };
+    let new_bot = match (b1, t1) {
+        (Ordering::Less, Ordering::Equal) => top,
+        (Ordering::Less, _) => end(false),
+        _ => bot,
+    };
+    let new_top = match (t2, b2) {
+        (Ordering::Greater, Ordering::Equal) => bot,
+        (Ordering::Greater, _) => end(true),
+        _ => top,
+    };
+    Some((new_bot, new_top))
 }
 
 /// Pushes the clipped piece unless it is a single point at an end of its range (see above).
 fn push_unless_end_point<K: Kernel>(
     out: &mut Vec<Piece>,
-    k: usize,
     e: &Edge,
     range: (Param, Param),
-    (bot, top): (Param, Param),
-    (hi, lo): (Option<DVec2>, Option<DVec2>),
+    pc: Piece,
 ) {
-    if e.cmp::<K>(&bot, &top) == Ordering::Equal
-        && (e.cmp::<K>(&bot, &range.0) == Ordering::Equal
-            || e.cmp::<K>(&top, &range.1) == Ordering::Equal)
+    if e.cmp::<K>(&pc.bot, &pc.top) == Ordering::Equal
+        && (e.cmp::<K>(&pc.bot, &range.0) == Ordering::Equal
+            || e.cmp::<K>(&pc.top, &range.1) == Ordering::Equal)
     {
         return;
     }
-    out.push(Piece {
-        edge: k,
-        bot,
-        top,
-        hi,
-        lo,
-    });
+    out.push(pc);
 }
 
 #[cfg(test)]

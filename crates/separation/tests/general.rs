@@ -409,15 +409,8 @@ fn closed_polygons_small_with_matrix_checks() {
     for size in [3usize, 4, 6, 9, 14] {
         for _ in 0..120 {
             let rot = ROTS[rng.index(ROTS.len())];
-            let extra = rng.range_i64(0, 3);
-            let c = polygon_pair(
-                &mut rng,
-                (size, size),
-                Place::Beyond(extra),
-                rot,
-                DVec2::ZERO,
-                false,
-            );
+            let place = Place::Beyond(rng.range_i64(0, 3));
+            let c = polygon_pair(&mut rng, (size, size), place, rot, DVec2::ZERO, false);
             agree::<Robust>(&c, c.p.len() + c.q.len() <= 60);
             ran += 1;
         }
@@ -431,15 +424,8 @@ fn open_subchains_of_polygons() {
     for size in [3usize, 5, 8, 12, 20] {
         for _ in 0..120 {
             let rot = ROTS[rng.index(ROTS.len())];
-            let extra = rng.range_i64(0, 3);
-            let c = polygon_pair(
-                &mut rng,
-                (size, size),
-                Place::Beyond(extra),
-                rot,
-                DVec2::ZERO,
-                true,
-            );
+            let place = Place::Beyond(rng.range_i64(0, 3));
+            let c = polygon_pair(&mut rng, (size, size), place, rot, DVec2::ZERO, true);
             agree::<Robust>(&c, c.p.len() + c.q.len() <= 50);
         }
     }
