@@ -93,19 +93,42 @@ pub(crate) fn validate<K: Kernel>(
     b: DVec2,
 ) -> Result<Frames, SeparationError> {
     match validate_touching::<K>(p, q, a, b)? {
-        (Some(frames), false) => Ok(frames),
+        Validated {
+            frames: Some(frames),
+            on_line,
+        } if !on_line.both() => Ok(frames),
         _ => Err(SeparationError::BothChainsTouchLine),
     }
 }
 
-/// [`validate`], but both chains may touch the line: the frames (`None` when every vertex of both
-/// chains lies on the line, so that no side is defined) and whether both touch it.
+/// The indices of each chain's vertices that lie on the line, as the validation found them.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct OnLine {
+    pub(crate) p: Vec<usize>,
+    pub(crate) q: Vec<usize>,
+}
+
+impl OnLine {
+    /// Whether both chains touch the line.
+    pub(crate) fn both(&self) -> bool {
+        !self.p.is_empty() && !self.q.is_empty()
+    }
+}
+
+/// What [`validate_touching`] found: the frames (`None` when every vertex of both chains lies on
+/// the line, so that no side is defined) and the vertices on the line.
+pub(crate) struct Validated {
+    pub(crate) frames: Option<Frames>,
+    pub(crate) on_line: OnLine,
+}
+
+/// [`validate`], but both chains may touch the line.
 pub(crate) fn validate_touching<K: Kernel>(
     p: &[DVec2],
     q: &[DVec2],
     a: DVec2,
     b: DVec2,
-) -> Result<(Option<Frames>, bool), SeparationError> {
+) -> Result<Validated, SeparationError> {
     if p.is_empty() {
         return Err(SeparationError::EmptyChain { chain: Chain::P });
     }
@@ -137,7 +160,15 @@ pub(crate) fn validate_touching<K: Kernel>(
         {
             Some(s) => s == Sign::Positive,
             // Every vertex of both chains lies on the line.
-            None => return Ok((None, true)),
+            None => {
+                return Ok(Validated {
+                    frames: None,
+                    on_line: OnLine {
+                        p: (0..p.len()).collect(),
+                        q: (0..q.len()).collect(),
+                    },
+                });
+            }
         },
     };
     let (l0, l1) = if swap { (b, a) } else { (a, b) };
@@ -153,20 +184,23 @@ pub(crate) fn validate_touching<K: Kernel>(
             mirror: true,
         },
     };
-    let mut touches = [false; 2];
-    for (k, (chain, pts, frame)) in [(Chain::P, p, frames.p), (Chain::Q, q, frames.q)]
-        .into_iter()
-        .enumerate()
-    {
+    let mut on_line = OnLine::default();
+    for (chain, pts, frame, on) in [
+        (Chain::P, p, frames.p, &mut on_line.p),
+        (Chain::Q, q, frames.q, &mut on_line.q),
+    ] {
         for (index, &v) in pts.iter().enumerate() {
             match frame.depth_sign::<K>(v) {
                 Sign::Negative => return Err(SeparationError::NotSeparated { chain, index }),
-                Sign::Zero => touches[k] = true,
+                Sign::Zero => on.push(index),
                 Sign::Positive => {}
             }
         }
     }
-    Ok((Some(frames), touches[0] && touches[1]))
+    Ok(Validated {
+        frames: Some(frames),
+        on_line,
+    })
 }
 
 /// Checks that a chain is monotone along the line (heights never decrease, or never increase, along

@@ -81,7 +81,7 @@ impl<K: Kernel> CvvMatrix<K> {
     pub fn new(p: &[DVec2], q: &[DVec2], a: DVec2, b: DVec2) -> Result<Self, SeparationError> {
         // Both chains may touch the line, as in `separation_of_chains`; not both lie on it.
         let frames = validate_touching::<K>(p, q, a, b)?
-            .0
+            .frames
             .ok_or(SeparationError::BothChainsTouchLine)?;
         let pp = prepare::<K>(p, frames.p, Chain::P)?;
         let qq = prepare::<K>(q, frames.q, Chain::Q)?;

@@ -8,7 +8,7 @@ use monotone_minima::row_minima_by;
 use polydist_polygon::Feature;
 use polydist_predicates::{Dist2, Kernel, Sign};
 
-use crate::chain::{EnvEdge, Prepared, validate_touching};
+use crate::chain::{EnvEdge, OnLine, Prepared, Validated, validate_touching};
 use crate::construct::{vertex_edge, vertex_vertex};
 use crate::cve::{CveMatrix, EdgeEntry, compare_edge_entries};
 use crate::cvv::CvvMatrix;
@@ -145,9 +145,9 @@ pub fn separation_of_chains<K: Kernel>(
     a: DVec2,
     b: DVec2,
 ) -> Result<ChainSeparation, SeparationError> {
-    let (frames, both_touch) = validate_touching::<K>(p, q, a, b)?;
-    let on_line = if both_touch {
-        on_the_line::<K>(p, q, a, b)
+    let Validated { frames, on_line } = validate_touching::<K>(p, q, a, b)?;
+    let on_line = if on_line.both() {
+        on_the_line::<K>(p, q, &on_line)
     } else {
         None
     };
@@ -200,22 +200,18 @@ pub fn separation_of_chains<K: Kernel>(
 /// their coordinates are lexicographically (a total order on `f64`, no predicate), and the nearest
 /// pair of two sets of points of a line is adjacent in that order; two edges lying on the line are
 /// disjoint segments, nearest at their ends, so vertices suffice. `O(k log k)` for the `k` vertices
-/// on the line (after `O(n_p + n_q)` orientation tests).
-fn on_the_line<K: Kernel>(p: &[DVec2], q: &[DVec2], a: DVec2, b: DVec2) -> Option<Cand> {
-    let on = |c: &[DVec2], side: bool| {
-        // The repeated last vertex of a closed chain is its vertex 0.
-        let n = if c.len() > 1 && c[0] == c[c.len() - 1] {
-            c.len() - 1
-        } else {
-            c.len()
-        };
-        (0..n)
-            .filter(|&i| K::orient(a, b, c[i]).sign().is_zero())
-            .map(|i| (c[i], i, side))
-            .collect::<Vec<_>>()
-    };
-    let mut all = on(p, true);
-    all.extend(on(q, false));
+/// on the line, which the validation listed.
+fn on_the_line<K: Kernel>(p: &[DVec2], q: &[DVec2], on_line: &OnLine) -> Option<Cand> {
+    let mut all = Vec::with_capacity(on_line.p.len() + on_line.q.len());
+    for (c, idx, side) in [(p, &on_line.p, true), (q, &on_line.q, false)] {
+        // The repeated last vertex of a closed chain is its vertex 0, listed already.
+        let closed = c.len() > 1 && c[0] == c[c.len() - 1];
+        all.extend(
+            idx.iter()
+                .filter(|&&i| !(closed && i == c.len() - 1))
+                .map(|&i| (c[i], i, side)),
+        );
+    }
     // `+ 0.0` turns `-0.0` into `0.0`, which `total_cmp` would otherwise put first.
     all.sort_unstable_by(|x, y| {
         (x.0.x + 0.0)
