@@ -316,14 +316,8 @@ impl Edge {
             }
             Param::Clip { h, l, hi, .. } => {
                 let d = g.raw_drop::<K>(self.a, self.b);
-                let ga = g.raw_at::<K>(self.a);
                 if d == Sign::Zero {
-                    ga
-                } else if ga == g.raw_at::<K>(self.b) {
-                    // `g` is affine: one strict sign at both ends holds on the whole edge, where
-                    // every arc end used as a piece end lies (two degree-2 signs for the degree-6
-                    // placement below).
-                    ga
+                    g.raw_at::<K>(self.a)
                 } else {
                     // g(t) = D (root_g − t): sign(D) · sign(root_g − r).
                     let (v1, v2) = self.root_against_arc::<K>(g, *h, *l);
@@ -337,13 +331,17 @@ impl Edge {
     }
 
     /// [`Self::eval`] at a parameter that lies on the closed edge (every piece end, envelope range
-    /// end and chain point does; the feet and the separator's lines do not): when `g` has one strict
-    /// sign at both ends it has that sign on the whole edge (it is affine), so a root is placed by two
-    /// degree-2 signs instead of the degree-4 root comparison.
+    /// end and chain point does, every arc end too; the feet and the separator's lines do not): when
+    /// `g` has one strict sign at both ends it has that sign on the whole edge (it is affine), so a
+    /// root or an arc end is placed by two degree-2 signs instead of the degree-4 root comparison or
+    /// the degree-6 arc placement.
     pub(crate) fn eval_within<K: Kernel>(&self, g: &Affine, t: &Param) -> Sign {
-        if let Param::Root(f) = t
-            && !f.same_root(g)
-        {
+        let placed = match t {
+            Param::Root(f) => !f.same_root(g),
+            Param::Clip { .. } => true,
+            Param::Start | Param::End => false,
+        };
+        if placed {
             let ga = g.raw_at::<K>(self.a);
             if ga != Sign::Zero && ga == g.raw_at::<K>(self.b) {
                 return if g.neg { ga.reversed() } else { ga };
