@@ -306,18 +306,19 @@ fn clip_and_push<K: Kernel>(
     // below (found by the soak test, see docs). Dropped.
     // The same holds at a shadow point or hidden vertex ending the edge's part on the envelope: it
     // is strictly dominated by the visible vertex at its height.
-    push_unless_end_point::<K>(
-        out,
-        e,
-        range,
-        Piece {
-            edge: k,
-            bot: new_bot,
-            top: new_top,
-            hi,
-            lo,
-        },
-    );
+    if e.cmp::<K>(&new_bot, &new_top) == Ordering::Equal
+        && (e.cmp::<K>(&new_bot, &range.0) == Ordering::Equal
+            || e.cmp::<K>(&new_top, &range.1) == Ordering::Equal)
+    {
+        return;
+    }
+    out.push(Piece {
+        edge: k,
+        bot: new_bot,
+        top: new_top,
+        hi,
+        lo,
+    });
 }
 
 /// A tangent point at an end `v` of the edge (on a convex corner of the envelope, the rule): whether
@@ -394,22 +395,6 @@ fn clip_to_arc<K: Kernel>(
         _ => top,
     };
     Some((new_bot, new_top))
-}
-
-/// Pushes the clipped piece unless it is a single point at an end of its range (see above).
-fn push_unless_end_point<K: Kernel>(
-    out: &mut Vec<Piece>,
-    e: &Edge,
-    range: (Param, Param),
-    pc: Piece,
-) {
-    if e.cmp::<K>(&pc.bot, &pc.top) == Ordering::Equal
-        && (e.cmp::<K>(&pc.bot, &range.0) == Ordering::Equal
-            || e.cmp::<K>(&pc.top, &range.1) == Ordering::Equal)
-    {
-        return;
-    }
-    out.push(pc);
 }
 
 #[cfg(test)]

@@ -1055,12 +1055,11 @@ fn dist_of(p: &[DVec2], q: &[DVec2], fp: Feature, fq: Feature) -> Dist2 {
 /// internal features, with the work done.
 ///
 /// Each subproblem of more than [`SCAN_BELOW`] vertex pairs is given to section 3
-/// ([`separation_of_chains`]) across the line of its run, after [`peeled`] has set aside the end
-/// edges that cross that line (each scanned against the other subchain in linear time), when the
-/// line then separates the middles (both may touch it). Otherwise (a middle vertex lies across the
-/// line: clipping at constructed points is not built) the subproblem is scanned exactly in
-/// `O(|P_i| · |Q_i|)`, pruned by bounding boxes. A `Q` subchain that spans the region's gap (a pocket's lid, no part of `Q`) is
-/// split there.
+/// ([`separation_of_chains`]) across the line of its run, in the parts [`split`] hands it (peeled
+/// ends, or runs for both assignments of sides, the rest scanned in linear time). Otherwise (small,
+/// or crossing the line more often than `split` takes: clipping at constructed points is not
+/// built) the subproblem is scanned exactly in `O(|P_i| · |Q_i|)`, pruned by bounding boxes. A `Q`
+/// subchain that spans the region's gap (a pocket's lid, no part of `Q`) is split there.
 pub(crate) fn solve<K: Kernel>(
     p: &SimplePolygon,
     q: &SimplePolygon,
@@ -1196,7 +1195,7 @@ fn solve_pass<K: Kernel>(
 /// The exact scan of two parts: pruned by bounding boxes when large (the containing case's long
 /// subchains), with the same answer.
 fn scan_part<K: Kernel>(p: &[DVec2], q: &[DVec2]) -> Winner {
-    if p.len() * q.len() > 256 {
+    if p.len() * q.len() > PRUNE_ABOVE {
         scan_pruned_winner::<K>(p, q, true)
     } else {
         scan_winner::<K>(p, q, true)
@@ -1260,7 +1259,12 @@ struct Jobs {
 ///    chain has at most [`MAX_RUNS`] runs and [`MAX_CROSSINGS`] crossing edges per assignment, so the
 ///    work stays `O(|P_i| + |Q_i|)`; clip points (section 3 on gapped chains) would lift the bounds.
 fn split<K: Kernel>(p: &[DVec2], q: &[DVec2], a: DVec2, c: DVec2) -> Option<Jobs> {
-    if let Some(((p0, p1), (q0, q1))) = peeled::<K>(p, q, a, c) {
+    // Each vertex's side of the line, decided once for both routes and both assignments.
+    let side = |chain: &[DVec2]| -> Vec<Orientation> {
+        chain.iter().map(|&v| K::orient(a, c, v)).collect()
+    };
+    let (sp, sq) = (side(p), side(q));
+    if let Some(((p0, p1), (q0, q1))) = peeled(&sp, &sq) {
         let (pl, ql) = (p.len() - 1, q.len() - 1);
         let mut scans = Vec::new();
         if p0 > 0 {
@@ -1288,8 +1292,8 @@ fn split<K: Kernel>(p: &[DVec2], q: &[DVec2], a: DVec2, c: DVec2) -> Option<Jobs
         (Orientation::Clockwise, Orientation::CounterClockwise),
         (Orientation::CounterClockwise, Orientation::Clockwise),
     ] {
-        let (rp, cp) = runs::<K>(p, a, c, wp)?;
-        let (rq, cq) = runs::<K>(q, a, c, wq)?;
+        let (rp, cp) = runs(&sp, wp)?;
+        let (rq, cq) = runs(&sq, wq)?;
         for &x in &rp {
             for &y in &rq {
                 jobs.section3.push((x, y));
@@ -1311,15 +1315,15 @@ const MAX_CROSSINGS: usize = 8;
 /// Inclusive index ranges of a chain's runs, and the first vertices of its crossing edges.
 type Runs = (Vec<(usize, usize)>, Vec<usize>);
 
-/// The maximal runs of vertices of `chain` not strictly on the side `wrong` of the line through `a`,
-/// `c`, and the edges (by their first vertex) with exactly one end strictly there; `None` when there
-/// are more than [`MAX_RUNS`] runs or [`MAX_CROSSINGS`] such edges. `O(n)` orientation tests.
-fn runs<K: Kernel>(chain: &[DVec2], a: DVec2, c: DVec2, wrong: Orientation) -> Option<Runs> {
+/// The maximal runs of a chain's vertices not strictly on the side `wrong` of the line (`sides`:
+/// each vertex's side), and the edges (by their first vertex) with exactly one end strictly there;
+/// `None` when there are more than [`MAX_RUNS`] runs or [`MAX_CROSSINGS`] such edges. `O(n)`.
+fn runs(sides: &[Orientation], wrong: Orientation) -> Option<Runs> {
     let (mut runs, mut crossing) = (Vec::new(), Vec::new());
     let mut start: Option<usize> = None;
     let mut prev_bad = None;
-    for (k, v) in chain.iter().enumerate() {
-        let bad = K::orient(a, c, *v) == wrong;
+    for (k, &s) in sides.iter().enumerate() {
+        let bad = s == wrong;
         if prev_bad.is_some_and(|b| b != bad) {
             crossing.push(k - 1);
         }
@@ -1337,13 +1341,15 @@ fn runs<K: Kernel>(chain: &[DVec2], a: DVec2, c: DVec2, wrong: Orientation) -> O
         }
     }
     if let Some(s) = start {
-        runs.push((s, chain.len() - 1));
+        runs.push((s, sides.len() - 1));
     }
     (runs.len() <= MAX_RUNS).then_some((runs, crossing))
 }
 
 /// Subproblems with at most this many vertex pairs are scanned without trying section 3.
 const SCAN_BELOW: usize = 256;
+/// Scans of more vertex pairs than this are pruned by bounding boxes.
+const PRUNE_ABOVE: usize = 256;
 
 /// A partial Step G (docs/algorithms/separator.md): the middle parts `P_i[p0..=p1]`, `Q_i[q0..=q1]`
 /// of two subchains that lie in opposite closed half-planes of the line through `a`, `c`, when the
@@ -1351,25 +1357,20 @@ const SCAN_BELOW: usize = 256;
 /// to the whole edge its cut falls in crosses the line there). The peeled end edges are scanned
 /// against the other chain in `O(|P_i| + |Q_i|)` each; clipping at constructed points, which would
 /// also keep a middle that leaves its half-plane, is not built. `None` when no side assignment
-/// works. `O(|P_i| + |Q_i|)` orientation tests.
-fn peeled<K: Kernel>(
-    p: &[DVec2],
-    q: &[DVec2],
-    a: DVec2,
-    c: DVec2,
-) -> Option<((usize, usize), (usize, usize))> {
-    let middle = |chain: &[DVec2], wrong: Orientation| {
-        let bad = |v: &DVec2| K::orient(a, c, *v) == wrong;
-        let lo = chain.iter().position(|v| !bad(v))?;
-        let hi = chain.iter().rposition(|v| !bad(v))?;
-        (!chain[lo..=hi].iter().any(bad)).then_some((lo, hi))
+/// works. `sp`, `sq`: each vertex's side of the line. `O(|P_i| + |Q_i|)`.
+fn peeled(sp: &[Orientation], sq: &[Orientation]) -> Option<((usize, usize), (usize, usize))> {
+    let middle = |sides: &[Orientation], wrong: Orientation| {
+        let bad = |s: &Orientation| *s == wrong;
+        let lo = sides.iter().position(|s| !bad(s))?;
+        let hi = sides.iter().rposition(|s| !bad(s))?;
+        (!sides[lo..=hi].iter().any(bad)).then_some((lo, hi))
     };
     [
         (Orientation::Clockwise, Orientation::CounterClockwise),
         (Orientation::CounterClockwise, Orientation::Clockwise),
     ]
     .into_iter()
-    .find_map(|(wp, wq)| Some((middle(p, wp)?, middle(q, wq)?)))
+    .find_map(|(wp, wq)| Some((middle(sp, wp)?, middle(sq, wq)?)))
 }
 
 #[cfg(test)]
