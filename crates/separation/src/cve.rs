@@ -381,10 +381,7 @@ impl<K: Kernel> CveMatrix<K> {
             }
         }
         for g in conds.iter().flatten() {
-            let (gb, gt) = (
-                e.eval_within::<K>(g, &pc.bot),
-                e.eval_within::<K>(g, &pc.top),
-            );
+            let (gb, gt) = e.eval_pair_within::<K>(g, &pc.bot, &pc.top);
             let ok = |s: Sign| s != Sign::Negative;
             match (ok(gb), ok(gt)) {
                 (true, true) => {}
@@ -508,8 +505,11 @@ impl<K: Kernel> Matrix for CveMatrix<K> {
         let q = self.cols[j].pt;
         let (pb, cb) = (&self.piece_bands[i], &self.col_bands[j]);
         let (bot, top) = (self.bot(pc), self.top(pc));
-        let bot_vs_q = self.cmp_height_with(&bot, q);
-        let top_vs_q = self.cmp_height_with(&top, q);
+        // One form, `H(x) − H(q)`, at both ends of the piece: its end signs are shared.
+        let (bot_vs_q, top_vs_q) =
+            self.edge(pc.edge)
+                .eval_pair_within::<K>(&self.fp.height_minus(q), &pc.bot, &pc.top);
+        let (bot_vs_q, top_vs_q) = (bot_vs_q.to_ordering(), top_vs_q.to_ordering());
         let q_below = match pb.down {
             Some(u) => self.fq.cmp_height::<K>(q, u) == Ordering::Less,
             None => bot_vs_q == Ordering::Greater,

@@ -350,6 +350,31 @@ impl Edge {
         self.eval::<K>(g, t)
     }
 
+    /// [`Self::eval_within`] at two parameters of the closed edge, sharing the two degree-2 signs
+    /// of `g` at the edge's ends: when they agree strictly, both answers are that sign with no
+    /// further test (the pattern of every admissibility test and every piece split, which ask `g`
+    /// at both ends of a piece).
+    pub(crate) fn eval_pair_within<K: Kernel>(
+        &self,
+        g: &Affine,
+        s: &Param,
+        t: &Param,
+    ) -> (Sign, Sign) {
+        let (ga, gb) = (g.raw_at::<K>(self.a), g.raw_at::<K>(self.b));
+        let at = |p: &Param| {
+            let raw = match p {
+                Param::Start => ga,
+                Param::End => gb,
+                Param::Root(f) if f.same_root(g) => Sign::Zero,
+                _ if ga != Sign::Zero && ga == gb => ga,
+                // `eval` applies the negation itself.
+                _ => return self.eval::<K>(g, p),
+            };
+            if g.neg { raw.reversed() } else { raw }
+        };
+        (at(s), at(t))
+    }
+
     /// `sign(root_f − e)` for the edge end `e` (start: `t = 0`, end: `t = 1`): `sign(f(e)) ·
     /// sign(f(a) − f(b))`, negated for the start (degree 2).
     fn root_vs_end<K: Kernel>(&self, f: &Affine, at_end: bool) -> Ordering {

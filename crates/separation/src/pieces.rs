@@ -58,10 +58,7 @@ fn depth_rule<K: Kernel>(
             continue;
         };
         let g = frame.depth_minus(t);
-        let (gb, gt) = (
-            e.eval_within::<K>(&g, &s.bot),
-            e.eval_within::<K>(&g, &s.top),
-        );
+        let (gb, gt) = e.eval_pair_within::<K>(&g, &s.bot, &s.top);
         // Split only where the sign strictly changes; a zero at one end is that end itself, and a
         // single point keeps the tangent of the rest of the piece (it is also a piece end of the
         // neighbour or a vertex, tested there).
@@ -351,7 +348,7 @@ fn clip_from_end<K: Kernel>(
         v1: other,
         neg: true,
     };
-    let (gb, gt) = (e.eval_within::<K>(&g, &bot), e.eval_within::<K>(&g, &top));
+    let (gb, gt) = e.eval_pair_within::<K>(&g, &bot, &top);
     let inside = |s: Sign| s != Sign::Negative;
     // `g` decreases away from `v`: the piece's end nearer `v` is tested first.
     match (v_is_b, inside(gb), inside(gt)) {
