@@ -336,7 +336,7 @@ pub(crate) fn closed_chain(p: &SimplePolygon) -> Vec<DVec2> {
 /// A line `(a, b)` through an edge of one hull with the other hull strictly on its outer side, among
 /// the hull edges at the closest features `fp` of `hp` and `fq` of `hq` (internal indices). Edges at
 /// a feature: both edges at a vertex, the edge itself.
-fn separating_edge<K: Kernel>(
+pub(crate) fn separating_edge<K: Kernel>(
     hp: &ConvexPolygon,
     fp: Feature,
     hq: &ConvexPolygon,
@@ -346,6 +346,12 @@ fn separating_edge<K: Kernel>(
         let n = h.len();
         if n < 2 {
             return [None, None];
+        }
+        if n == 2 {
+            // A segment (the hull of a collinear polyline): its edges 0 and 1 are the segment in
+            // both directions, and the closest feature names either; the other hull is on the
+            // outer side of one of them.
+            return [Some(0), Some(1)];
         }
         match f {
             Feature::Edge(e) => [Some(e), None],
@@ -381,7 +387,7 @@ fn to_caller<K: Kernel>(p: &SimplePolygon, q: &SimplePolygon, pair: ClosestPair)
 
 /// The caller's feature of `p` for the chain feature `f`; `other` is the realizing point on the
 /// other polygon (an input vertex whenever `f` is an edge).
-fn caller_feature<K: Kernel>(p: &SimplePolygon, f: Feature, other: DVec2) -> Feature {
+pub(crate) fn caller_feature<K: Kernel>(p: &SimplePolygon, f: Feature, other: DVec2) -> Feature {
     let n = p.len();
     match f {
         Feature::Vertex(i) => Feature::Vertex(p.source_index(i % n)),
