@@ -92,6 +92,15 @@ pub enum SeparationError {
         "one polygon lies inside the other (no pocket of the outer one holds it): the polygons are not disjoint"
     )]
     HullsIntersect,
+    /// [`polyline_to_polygon`](crate::polyline_to_polygon): the convex hulls of the polyline and of
+    /// the polygon meet. Amato's separator is built from the region between two polygon boundaries,
+    /// which an open polyline does not bound, so only polylines whose hull is disjoint from the
+    /// polygon's are taken; [`separation_brute`](crate::separation_brute) answers the others in
+    /// `O(nm)`.
+    #[error(
+        "the polyline's convex hull meets the polygon's: only polylines with disjoint hulls are supported"
+    )]
+    PolylineHullsMeet,
     /// The search found no admissible vertex pair. With an exact kernel this cannot happen (it would
     /// be a bug); with the `Fast` kernel inconsistent decisions can cause it.
     #[error(

@@ -35,6 +35,7 @@
 //! | [`Route::Separators`] (inside [`separation`]) | section 2's separator `S(P, Q)` when the hulls meet: facing chains, the region's triangulation, the geodesic, two-sided extensions, greedy pruning, report 001's subchains, then `σ(P_i, Q_i)` | done for the non-containing case, the pinched channel and the containing case (two passes over the annulus cut open, at its top and at its bottom), checked against properties (i)–(iv), (v) for vertices, monotone cuts and Lemma 1 (for every vertex–vertex sight on small cases) by an `O(N²)` checker; each subproblem goes to section 3 across its line (crossing end edges peeled, or at most 4 runs and 8 crossing edges per chain), otherwise it is scanned (`O(|P_i||Q_i|)`) |
 //! | [`triangulate`], [`shortest_path`], [`first_hit`], [`extensions`] | exact triangulation of a simple polygon with collinear vertices (`O(n log n)`), geodesics by the funnel, ray-shooting arms (one walk each, or every arm of a shortest-path tree in `O(n log n)`) | done (`docs/algorithms/triangulation.md`) |
 //! | [`point_to_polygon`], [`segment_to_polygon`] | a point or a segment against a simple polygon, `O(n)` | done |
+//! | [`polyline_to_polygon`] | an open simple polyline (a toolpath) against a simple polygon | done when the hulls are disjoint (section 3 on the open chain); hulls that meet are [`SeparationError::PolylineHullsMeet`] (the separator needs two polygons) |
 //! | lines touched by both chains | section 3 adds the nearest pair of vertices on the line (a sort) to the wedges' candidates | done (2026-11-26) |
 //! | a linear-time envelope, chains with gaps (runs ending at symbolic clip points) | — | **not done**: see `docs/algorithms/separation.md` and `docs/algorithms/separator.md` |
 //!
@@ -74,6 +75,7 @@ mod geodesic;
 mod param;
 mod pieces;
 mod polygon;
+mod polyline;
 mod region;
 mod result;
 mod separator;
@@ -96,6 +98,7 @@ pub use polygon::{
     BoundaryPiece, Intersection, PolygonSeparation, Route, intersection, polygon_separation_brute,
     separation, separation_of_disjoint,
 };
+pub use polyline::polyline_to_polygon;
 pub use result::{ChainSeparation, ClosestPair, Cvv, CvvStats, SeparationStats};
 pub use sigma::separation_of_chains;
 pub use simple_distance::{BoundaryPoint, PointToPolygon, point_to_polygon, segment_to_polygon};

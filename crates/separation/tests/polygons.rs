@@ -3,14 +3,15 @@
 
 use glam::DVec2;
 use polydist_oracle::{
-    Contact, SplitMix64, boundary_distance, comb, contact_status_convex, contact_status_simple,
-    spiral, star, two_opt, ulps_error_sqrt,
+    Contact, SplitMix64, boundary_distance, chain_distance, comb, contact_status_convex,
+    contact_status_simple, spiral, star, two_opt, ulps_error_sqrt,
 };
 use polydist_polygon::predicates::{Exact, Fast, Kernel, Robust};
 use polydist_polygon::{Feature, Location, SimplePolygon};
 use polydist_separation::{
-    Intersection, PolygonSeparation, Route, intersection, point_to_polygon,
-    polygon_separation_brute, segment_to_polygon, separation, separation_of_disjoint,
+    Chain, Intersection, PolygonSeparation, Route, SeparationError, intersection, point_to_polygon,
+    polygon_separation_brute, polyline_to_polygon, segment_to_polygon, separation,
+    separation_brute, separation_of_disjoint,
 };
 use proptest::prelude::*;
 
@@ -260,6 +261,14 @@ proptest! {
         }
     }
 
+    /// Random and degenerate polylines (repeats, collinear vertices, one or two vertices, far from
+    /// the origin) against random polygons beside them.
+    #[test]
+    fn polylines_against_polygons_proptest(seed in any::<u64>()) {
+        let (t, q, touching) = polyline_case(seed);
+        check_polyline::<Robust>(&t, &q, touching)?;
+    }
+
     /// Arbitrary coordinates never panic, under Robust and Fast.
     #[test]
     fn arbitrary_points_never_panic(x in proptest::num::f64::ANY, y in proptest::num::f64::ANY, seed in any::<u64>()) {
@@ -271,7 +280,216 @@ proptest! {
         let _ = point_to_polygon::<Fast>(z, &sp);
         let _ = segment_to_polygon::<Robust>(z, p[0], &sp);
         let _ = segment_to_polygon::<Fast>(p[1], z, &sp);
+        let _ = polyline_to_polygon::<Robust>(&[p[0], z, p[2], z], &sp);
+        let _ = polyline_to_polygon::<Fast>(&[z, p[1], z], &sp);
     }
+}
+
+/// A random open simple polyline and a random polygon beside it (bounding boxes `gap` apart, the gap
+/// 0 in one case of four, so that the hulls may touch), with the degenerate features section 3 must
+/// take: repeated vertices, collinear vertices (edge midpoints, exact on these dyadic inputs), one or
+/// two vertices; moved far from the origin in one case of four. Returns `(T, Q, the boxes touch)`.
+fn polyline_case(seed: u64) -> (Vec<DVec2>, Vec<DVec2>, bool) {
+    let mut rng = SplitMix64::new(seed);
+    let n = 4 + rng.index(40);
+    let ring = shape(&mut rng, n);
+    // An open cyclic sub-chain of a simple ring is a simple polyline.
+    let len = 1 + rng.index(ring.len());
+    let start = rng.index(ring.len());
+    let mut t: Vec<DVec2> = (0..len).map(|k| ring[(start + k) % ring.len()]).collect();
+    match rng.below(4) {
+        0 => {
+            let k = rng.index(t.len());
+            t.insert(k, t[k]);
+        }
+        1 if t.len() >= 2 => {
+            let k = rng.index(t.len() - 1);
+            t.insert(k + 1, (t[k] + t[k + 1]) * 0.5);
+        }
+        _ => {}
+    }
+    let m = 4 + rng.index(40);
+    let mut q = shape(&mut rng, m);
+    // The polygon's caller vertices differ from its internal ones (a collinear vertex or a repeat,
+    // both dropped by `SimplePolygon`), so that features must be mapped back.
+    let k = rng.index(q.len());
+    match rng.below(3) {
+        0 => q.insert(k + 1, (q[k] + q[(k + 1) % q.len()]) * 0.5),
+        1 => q.insert(k, q[k]),
+        _ => {}
+    }
+    let (lo, hi) = bbox(&t);
+    let extent = (hi - lo).max_element().max(1.0);
+    let gap = match rng.below(4) {
+        0 => 0.0,
+        1 => extent * 2f64.powi(-30),
+        2 => extent * 0.125,
+        _ => extent * 4.0,
+    };
+    let slide = rng.range_i64(-4, 5) as f64 * 0.25;
+    let q = place_beside(
+        &t,
+        &q,
+        rng.index(2),
+        if rng.coin() { 1.0 } else { -1.0 },
+        gap,
+        slide,
+    );
+    let (t, q) = if rng.below(4) == 0 {
+        let o = DVec2::new(1e12, -1e12);
+        let far = |v: Vec<DVec2>| v.into_iter().map(|z| z + o).collect::<Vec<_>>();
+        (far(t), far(q))
+    } else {
+        (t, q)
+    };
+    // Far from the origin a tiny gap rounds away: whether the boxes are apart is read off the
+    // final coordinates.
+    let ((tl, th), (ql, qh)) = (bbox(&t), bbox(&q));
+    let apart = th.x < ql.x || qh.x < tl.x || th.y < ql.y || qh.y < tl.y;
+    (t, q, !apart)
+}
+
+/// One polyline case under `K`: an exact optimum of the oracle's open-chain distance (the polygon
+/// passed as the closed chain of its caller vertices, so that its caller features are the chain's),
+/// the distance within 3.5 ulps, the brute-force twin optimal too; `PolylineHullsMeet` only where
+/// the boxes touch. Returns whether the polyline was answered.
+fn check_polyline<K: Kernel>(
+    t: &[DVec2],
+    q: &[DVec2],
+    touching: bool,
+) -> Result<bool, TestCaseError> {
+    let Ok(sq) = SimplePolygon::try_new(q) else {
+        return Ok(false);
+    };
+    let mut closed = q.to_vec();
+    closed.push(q[0]);
+    match polyline_to_polygon::<K>(t, &sq) {
+        Ok(PolygonSeparation::Separated { pair, route, .. }) => {
+            prop_assert_eq!(route, Route::SeparableChains);
+            let exact = chain_distance(t, &closed);
+            prop_assert!(
+                exact.is_optimal_pair(
+                    oracle_feature(pair.feature_p),
+                    oracle_feature(pair.feature_q)
+                ),
+                "not optimal: {:?} {:?}",
+                pair.feature_p,
+                pair.feature_q
+            );
+            prop_assert!(ulps_error_sqrt(pair.distance, &exact.sq) <= 3.5);
+            let b = separation_brute::<K>(t, &closed).expect("brute force answers");
+            prop_assert!(
+                exact.is_optimal_pair(oracle_feature(b.feature_p), oracle_feature(b.feature_q))
+            );
+            Ok(true)
+        }
+        Err(SeparationError::PolylineHullsMeet) => {
+            prop_assert!(touching, "hulls of boxes apart said to meet");
+            Ok(false)
+        }
+        other => Err(TestCaseError::fail(format!(
+            "unexpected {other:?}: T = {t:?}, Q = {q:?}"
+        ))),
+    }
+}
+
+#[test]
+fn polylines_against_polygons() {
+    let (mut answered, mut refused) = (0, 0);
+    for seed in 0..400 {
+        let (t, q, touching) = polyline_case(seed);
+        let got = check_polyline::<Robust>(&t, &q, touching)
+            .unwrap_or_else(|e| panic!("seed {seed}: {e}"));
+        check_polyline::<Exact>(&t, &q, touching).unwrap_or_else(|e| panic!("seed {seed}: {e}"));
+        if got {
+            answered += 1
+        } else {
+            refused += 1
+        }
+        // The Fast kernel only has to terminate.
+        if let Ok(sq) = SimplePolygon::try_new(&q) {
+            let _ = polyline_to_polygon::<Fast>(&t, &sq);
+        }
+    }
+    // Both outcomes occur: boxes apart are answered, and some touching boxes have meeting hulls.
+    assert!(
+        answered >= 250 && refused >= 10,
+        "answered {answered}, refused {refused}"
+    );
+}
+
+#[test]
+fn polyline_errors_say_what_and_where() {
+    let sq =
+        SimplePolygon::try_from(&[[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]][..]).unwrap();
+    assert_eq!(
+        polyline_to_polygon::<Robust>(&[], &sq),
+        Err(SeparationError::EmptyChain { chain: Chain::P })
+    );
+    let bad = [
+        DVec2::new(-2.0, 0.0),
+        DVec2::new(-3.0, 0.0),
+        DVec2::new(f64::NAN, 0.0),
+    ];
+    assert_eq!(
+        polyline_to_polygon::<Robust>(&bad, &sq),
+        Err(SeparationError::InvalidCoordinate {
+            chain: Chain::P,
+            index: 2
+        })
+    );
+    // Around the square (hulls meet) and through it.
+    let around = [
+        DVec2::new(-1.0, -1.0),
+        DVec2::new(2.0, -1.0),
+        DVec2::new(2.0, 2.0),
+        DVec2::new(-1.0, 2.0),
+    ];
+    assert_eq!(
+        polyline_to_polygon::<Robust>(&around, &sq),
+        Err(SeparationError::PolylineHullsMeet)
+    );
+    let through = [DVec2::new(-1.0, 0.5), DVec2::new(2.0, 0.5)];
+    assert_eq!(
+        polyline_to_polygon::<Exact>(&through, &sq),
+        Err(SeparationError::PolylineHullsMeet)
+    );
+    // A polyline crossing itself is reported when section 3 meets the crossing.
+    let bow = [
+        DVec2::new(-3.0, 0.0),
+        DVec2::new(-2.0, 1.0),
+        DVec2::new(-2.0, 0.0),
+        DVec2::new(-3.0, 1.0),
+    ];
+    assert!(matches!(
+        polyline_to_polygon::<Robust>(&bow, &sq),
+        Ok(PolygonSeparation::Separated { .. })
+            | Err(SeparationError::NotSimple {
+                chain: Chain::P,
+                ..
+            })
+    ));
+    // One vertex and a degenerate (collinear) polyline: hulls that are a point and a segment.
+    let point = [DVec2::new(-1.0, 0.5)];
+    assert_eq!(
+        polyline_to_polygon::<Robust>(&point, &sq)
+            .unwrap()
+            .distance(),
+        1.0
+    );
+    let line = [
+        DVec2::new(-3.0, 0.25),
+        DVec2::new(-2.0, 0.25),
+        DVec2::new(-0.5, 0.25),
+    ];
+    let s = polyline_to_polygon::<Robust>(&line, &sq).unwrap();
+    let PolygonSeparation::Separated { pair, .. } = s else {
+        panic!("disjoint")
+    };
+    assert_eq!(
+        (pair.distance, pair.feature_p, pair.feature_q),
+        (0.5, Feature::Vertex(2), Feature::Edge(3))
+    );
 }
 
 /// Both routes of the fast path run on the random family (a guard against a generator that never
