@@ -9,7 +9,7 @@
 //! | [`predicates`] | `polydist-predicates` | exact predicates behind the `Fast`, `Robust` and `Exact` kernels |
 //! | [`polygon`] | `polydist-polygon` | validated `ConvexPolygon` and `SimplePolygon`, Melkman hull, point location |
 //! | [`convex`] | `polydist-convex` | convex–convex distance in O(log m + log n) with exact features and closest points |
-//! | [`separation`] | `polydist-separation` | separation of simple polygons (Amato 1992) when their hulls are disjoint, point/segment–polygon distances, and section 3 on its own (chains separated by a line, with SMAWK) |
+//! | [`separation`] | `polydist-separation` | separation of simple polygons (Amato 1992: section 3 when their hulls are disjoint, the separator when they meet), point/segment–polygon distances, open polylines against a polygon with a disjoint hull, and section 3 on its own (chains separated by a line, with SMAWK) |
 //!
 //! `polydist::polygon::ConvexPolygon` is the same item as `polydist_polygon::ConvexPolygon`. The row-minima
 //! search polydist uses (SMAWK) is its own crate, `monotone-minima`, with no dependency on anything of ours.
