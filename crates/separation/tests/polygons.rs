@@ -3,15 +3,15 @@
 
 use glam::DVec2;
 use polydist_oracle::{
-    Contact, SplitMix64, boundary_distance, chain_distance, comb, contact_status_convex,
-    contact_status_simple, spiral, star, two_opt, ulps_error_sqrt,
+    Contact, ExactDistance, SplitMix64, boundary_distance, chain_distance, comb,
+    contact_status_convex, contact_status_simple, spiral, star, two_opt, ulps_error_sqrt,
 };
 use polydist_polygon::predicates::{Exact, Fast, Kernel, Robust};
 use polydist_polygon::{Feature, Location, SimplePolygon};
 use polydist_separation::{
-    Chain, Intersection, PolygonSeparation, Route, SeparationError, intersection, point_to_polygon,
-    polygon_separation_brute, polyline_to_polygon, segment_to_polygon, separation,
-    separation_brute, separation_of_disjoint,
+    Chain, ClosestPair, Intersection, PolygonSeparation, Route, SeparationError, intersection,
+    point_to_polygon, polygon_separation_brute, polyline_to_polygon, segment_to_polygon,
+    separation, separation_brute, separation_of_disjoint,
 };
 use proptest::prelude::*;
 
@@ -73,6 +73,21 @@ fn place_beside(
     q.iter().map(|&v| v + shift).collect()
 }
 
+/// `pair` is an exact optimum of the oracle's answer, its distance within 3.5 ulps.
+fn check_optimal(exact: &ExactDistance, pair: &ClosestPair) -> Result<(), TestCaseError> {
+    prop_assert!(
+        exact.is_optimal_pair(
+            oracle_feature(pair.feature_p),
+            oracle_feature(pair.feature_q)
+        ),
+        "not optimal: {:?} {:?}",
+        pair.feature_p,
+        pair.feature_q
+    );
+    prop_assert!(ulps_error_sqrt(pair.distance, &exact.sq) <= 3.5);
+    Ok(())
+}
+
 /// Checks one pair: the intersection check against the oracle and the brute force, and when the
 /// polygons are disjoint, `separation` against the oracle (exact optimal features, distance within
 /// 3.5 ulps), whatever the hulls do (disjoint, interlocked, nested, pinched).
@@ -96,16 +111,7 @@ fn check_pair<K: Kernel>(p: &[DVec2], q: &[DVec2]) -> Result<(), TestCaseError> 
         Ok(PolygonSeparation::Separated { pair, .. }) => {
             prop_assert!(!meets);
             let exact = boundary_distance(p, q);
-            prop_assert!(
-                exact.is_optimal_pair(
-                    oracle_feature(pair.feature_p),
-                    oracle_feature(pair.feature_q)
-                ),
-                "not optimal: {:?} {:?}",
-                pair.feature_p,
-                pair.feature_q
-            );
-            prop_assert!(ulps_error_sqrt(pair.distance, &exact.sq) <= 3.5);
+            check_optimal(&exact, &pair)?;
             let PolygonSeparation::Separated { pair: b, .. } = brute else {
                 return Err(TestCaseError::fail("brute force says intersecting"));
             };
@@ -367,16 +373,7 @@ fn check_polyline<K: Kernel>(
         Ok(PolygonSeparation::Separated { pair, route, .. }) => {
             prop_assert_eq!(route, Route::SeparableChains);
             let exact = chain_distance(t, &closed);
-            prop_assert!(
-                exact.is_optimal_pair(
-                    oracle_feature(pair.feature_p),
-                    oracle_feature(pair.feature_q)
-                ),
-                "not optimal: {:?} {:?}",
-                pair.feature_p,
-                pair.feature_q
-            );
-            prop_assert!(ulps_error_sqrt(pair.distance, &exact.sq) <= 3.5);
+            check_optimal(&exact, &pair)?;
             let b = separation_brute::<K>(t, &closed).expect("brute force answers");
             prop_assert!(
                 exact.is_optimal_pair(oracle_feature(b.feature_p), oracle_feature(b.feature_q))
