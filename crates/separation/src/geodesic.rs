@@ -8,7 +8,7 @@
 //! * [`first_hit`]: the first boundary point met by the prolongation of a segment beyond a ring
 //!   vertex, by walking the triangulation along the ray. `O(k)` for `k` triangles crossed (not
 //!   linear in the worst case over all arms of a path: `Θ(n²)` in all; [`extensions`](crate::extensions)
-//!   gives every arm of a shortest-path tree in `O(n log n)`, and the separator switches to it when
+//!   gives every arm of a shortest-path tree in `O(n)`, and the separator switches to it when
 //!   its walks grow long).
 //!
 //! Every decision is the exact sign of a degree-2 polynomial of input coordinates through the kernel

@@ -181,8 +181,8 @@ fn piece(p: &SimplePolygon, e: usize) -> BoundaryPiece {
 ///
 /// # Complexity
 /// Disjoint hulls: as [`separation_of_disjoint`] (`O(N)` plus section 3). Hulls that meet:
-/// `O(N log N)` for the intersection sweep, the triangulation of the region between the facing
-/// chains and the extension arms, `O(N)` for the geodesic and the pruning, and section 3 on each
+/// `O(N log N)` for the intersection sweep and the triangulation of the region between the facing
+/// chains, `O(N)` for the geodesic, the extension arms and the pruning, and section 3 on each
 /// subproblem, except `O(|P_i| · |Q_i|)` for a subproblem whose subchains cross its line more often
 /// than section 3's runs allow (`docs/algorithms/separator.md`).
 ///

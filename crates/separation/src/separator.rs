@@ -864,9 +864,8 @@ pub(crate) fn build<K: Kernel>(
 /// the first boundary point). The arms are walked in the triangulation while the walks stay within
 /// `budget` triangle steps in all (`8n + 64`: the common case, short arms, `O(n)`); past it the
 /// remaining arms are read from the extensions of the two shortest-path trees from `path`'s ends
-/// ([`extensions`], `O(n log n)`), whose edges the runs are. So step 4 costs `O(n log n)` in the
-/// worst case instead of the walks' `Θ(n²)`, and the walks' `O(n)` when arms are short. Both give
-/// the same hits (tested).
+/// ([`extensions`], `O(n)`), whose edges the runs are. So step 4 costs `O(n)` in all (the paper's
+/// bound), where the walks alone cost `Θ(n²)` in the worst case. Both give the same hits (tested).
 fn runs_with_arms<K: Kernel>(
     tri: &Triangulation,
     ring: &[DVec2],
