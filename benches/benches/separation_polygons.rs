@@ -19,6 +19,11 @@
 //! - `polygons/interlocked_spirals`: two spiral arms turned half a turn from each other, nested one
 //!   unit apart (clearance 1/2, up to six turns): the separator's long spiral corridor.
 //!
+//! - `polylines/toolpath`: an open polyline (the tooth profile of the mirrored saw-tooth slab, `N/2`
+//!   vertices, tips opposite notches `1/4` away) against the saw-tooth slab (`N/2` vertices):
+//!   `polyline_to_polygon` (disjoint hulls, section 3 on the open chain) against parry2d-f64 (open
+//!   against closed `Polyline`), geo (`LineString` against `Polygon`) and the chains' brute force.
+//!
 //! Series, per `N`:
 //! - `validate`: building both `SimplePolygon`s (exact simplicity sweep), which a caller does once;
 //! - `intersection`: the intersection check alone (`intersection::<Robust>`, `O(N log N)`);
@@ -49,7 +54,10 @@ use polydist_benches::{
 use polydist_oracle::SplitMix64;
 use polydist_polygon::SimplePolygon;
 use polydist_predicates::{Exact, Fast, Kernel, Robust};
-use polydist_separation::{intersection, polygon_separation_brute, separation_of_disjoint};
+use polydist_separation::{
+    intersection, polygon_separation_brute, polyline_to_polygon, separation_brute,
+    separation_of_disjoint,
+};
 
 /// Total vertices.
 const SIZES: [usize; 6] = [64, 512, 4096, 32_768, 131_072, 1_048_576];
@@ -228,6 +236,93 @@ fn run(c: &mut Criterion, name: &str, make: fn(usize) -> (Vec<DVec2>, Vec<DVec2>
     group.finish();
 }
 
+/// The saw-tooth slab and, as an open polyline, the tooth profile of its mirror image (the mirror's
+/// vertices left of its back, in order).
+fn toolpath(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
+    let (slab, mirror) = sawteeth(n);
+    let back = mirror.iter().map(|v| v.x).fold(f64::NEG_INFINITY, f64::max);
+    // The mirror's back corners are consecutive on its ring: rotate them to the end, then drop them.
+    let k = mirror.len();
+    let start = (0..k)
+        .find(|&i| mirror[i].x == back && mirror[(i + k - 1) % k].x != back)
+        .expect("a back corner");
+    let path: Vec<DVec2> = (0..k)
+        .map(|i| mirror[(start + i) % k])
+        .filter(|v| v.x != back)
+        .collect();
+    (slab, path)
+}
+
+fn polylines(c: &mut Criterion) {
+    let name = "polylines/toolpath";
+    if std::env::var("POLYDIST_BENCH_ONLY").is_ok_and(|only| !name.contains(only.as_str())) {
+        return;
+    }
+    let mut group = c.benchmark_group(name);
+    configure(&mut group);
+    let open = |c: &[DVec2]| Polyline::new(c.iter().map(|v| Vector::new(v.x, v.y)).collect(), None);
+    let ours = |t: &[DVec2], q: &SimplePolygon, fast: bool| {
+        let s = if fast {
+            polyline_to_polygon::<Fast>(t, q)
+        } else {
+            polyline_to_polygon::<Robust>(t, q)
+        };
+        s.expect("disjoint hulls").distance()
+    };
+    for n in SIZES {
+        let (slab, path) = toolpath(n);
+        let q = SimplePolygon::try_new(&slab).expect("simple");
+        let d = ours(&path, &q, false);
+        let rel = |x: f64| ((x - d) / d).abs();
+        let (pt, pq) = (open(&path), polyline(&slab));
+        assert!(rel(parry(&pt, &pq)) < 1e-9, "{name} n={n}: parry disagrees");
+        let mut closed = slab.clone();
+        closed.push(slab[0]);
+        let geo_path = LineString::from(path.iter().map(|v| (v.x, v.y)).collect::<Vec<_>>());
+        if n <= SMALL_MAX {
+            let brute = separation_brute::<Robust>(&path, &closed).expect("valid");
+            assert!(rel(brute.distance) < 1e-12, "{name} n={n}: brute disagrees");
+            let g = Euclidean.distance(&geo_path, &geo_polygon(&slab));
+            assert!(rel(g) < 1e-9, "{name} n={n}: geo disagrees");
+        }
+        for (series, fast) in [("query_fast", true), ("query_robust", false)] {
+            group.bench_with_input(BenchmarkId::new(series, n), &(&path, &q), |bch, (t, q)| {
+                bch.iter(|| ours(black_box(t), black_box(q), fast))
+            });
+        }
+        if n <= SMALL_MAX {
+            group.bench_with_input(
+                BenchmarkId::new("brute_robust", n),
+                &(&path, &closed),
+                |bch, (t, q)| {
+                    bch.iter(|| {
+                        separation_brute::<Robust>(black_box(t), black_box(q))
+                            .expect("valid")
+                            .distance
+                    })
+                },
+            );
+            let gq = geo_polygon(&slab);
+            group.bench_with_input(
+                BenchmarkId::new("geo", n),
+                &(&geo_path, &gq),
+                |bch, (t, q)| bch.iter(|| Euclidean.distance(black_box(*t), black_box(*q))),
+            );
+        }
+        group.bench_with_input(
+            BenchmarkId::new("parry_query", n),
+            &(pt, pq),
+            |bch, (t, q)| bch.iter(|| parry(black_box(t), black_box(q))),
+        );
+        group.bench_with_input(
+            BenchmarkId::new("parry_build_query", n),
+            &(&path, &slab),
+            |bch, (t, q)| bch.iter(|| parry(&open(black_box(t)), &polyline(black_box(q)))),
+        );
+    }
+    group.finish();
+}
+
 fn benches() {
     let mut c = Criterion::default().configure_from_args();
     run(&mut c, "polygons/stars", stars, usize::MAX);
@@ -255,6 +350,7 @@ fn benches() {
     // Up to 131,072: its subproblems go to section 3 since 2026-11-26 (docs/algorithms/separator.md);
     // a million vertices is timed by `examples/separation_profile` instead.
     run(&mut c, "polygons/pocket", pocket, 131_072);
+    polylines(&mut c);
     c.final_summary();
 }
 
