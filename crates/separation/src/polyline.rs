@@ -5,11 +5,11 @@
 use glam::DVec2;
 use polydist_convex::{Separation, distance_with_hint};
 use polydist_polygon::predicates::{Kernel, is_valid_coordinate};
-use polydist_polygon::{PolygonError, SimplePolygon, convex_hull_with};
+use polydist_polygon::{Feature, PolygonError, SimplePolygon, convex_hull_with};
 
 use crate::error::{Chain, SeparationError};
 use crate::polygon::{PolygonSeparation, Route, caller_feature, closed_chain, separating_edge};
-use crate::result::ClosestPair;
+use crate::result::{ClosestPair, SeparationStats};
 use crate::sigma::separation_of_chains;
 
 /// σ(T, Q) of an open simple polyline `T` and a simple polygon `Q` whose convex hulls are disjoint:
@@ -17,7 +17,9 @@ use crate::sigma::separation_of_chains;
 ///
 /// Amato's section 2 fast path, for an open chain: the hulls (`CH(T)` by Andrew's monotone chain,
 /// `CH(Q)` by Melkman's), their distance and closest features by the convex crate's `O(log N)`
-/// search, a separating line through an edge of one hull at those features, then section 3
+/// search. When those features are a vertex of `CH(T)` (a vertex of `T`) and a feature of `CH(Q)`
+/// on `Q`'s boundary (not a lid), that pair is the answer ([`Route::HullFeatures`]); otherwise a
+/// separating line through an edge of one hull at those features, then section 3
 /// ([`separation_of_chains`](crate::separation_of_chains)) on `T` (open) and `Q`'s boundary
 /// (closed). Disjoint hulls hold disjoint sets, so no intersection check is needed.
 ///
@@ -96,10 +98,27 @@ pub fn polyline_to_polygon<K: Kernel>(
     })?;
     let hq = q.convex_hull_with::<K>();
     let (sep, hint) = distance_with_hint::<K>(&ht, &hq, None);
-    if !matches!(sep, Separation::Disjoint(_)) {
+    let Separation::Disjoint(closest) = sep else {
         return Err(SeparationError::PolylineHullsMeet);
-    }
+    };
     let (ft, fq) = hint.internal_pair().ok_or(SeparationError::Inconsistent)?;
+    if matches!(ft, Feature::Vertex(_)) && !matches!(fq, Feature::Edge(e) if hq.is_lid(e)) {
+        // A hull vertex of `T` is a vertex of `T`, and `Q`'s closest hull feature lies on its
+        // boundary: the pair realizes the hulls' distance, a lower bound of σ, so it is optimal.
+        // (Every edge of `T`'s hull counts as a lid: an edge there goes to section 3.)
+        return Ok(PolygonSeparation::Separated {
+            pair: ClosestPair {
+                distance: closest.distance,
+                squared_distance: closest.squared_distance,
+                point_p: closest.point_p,
+                point_q: closest.point_q,
+                feature_p: closest.feature_p,
+                feature_q: closest.feature_q,
+            },
+            route: Route::HullFeatures,
+            stats: SeparationStats::default(),
+        });
+    }
     let (a, b) = separating_edge::<K>(&ht, ft, &hq, fq).ok_or(SeparationError::Inconsistent)?;
     let s = separation_of_chains::<K>(t, &closed_chain(q), a, b)?;
     Ok(PolygonSeparation::Separated {
