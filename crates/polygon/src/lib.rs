@@ -8,7 +8,8 @@
 //! - [`SimplePolygon::try_new`]: a polygon whose edges meet only at shared vertices, checked by the
 //!   Shamos–Hoey sweep, `O(n log n)`.
 //! - [`SimplePolygon::convex_hull`] (Melkman, `O(n)`) and [`convex_hull`] of any point set (Andrew's
-//!   monotone chain, `O(n log n)`).
+//!   monotone chain, `O(n log n)`); [`convex_hull_of_two_with`], the hull of two convex polygons by
+//!   the same scan over their merged lexicographic runs, `O(n)`.
 //! - [`ConvexPolygon::locate`] in `O(log n)` and [`SimplePolygon::locate`] in `O(n)`: inside, on the
 //!   boundary, or outside, decided exactly.
 //!
@@ -77,7 +78,7 @@ mod source_map;
 mod sweep;
 pub mod treap;
 
-pub use andrew::{convex_hull, convex_hull_with};
+pub use andrew::{convex_hull, convex_hull_of_two_with, convex_hull_with};
 pub use convex::ConvexPolygon;
 pub use error::PolygonError;
 pub use feature::{Feature, Location, Segment};

@@ -475,3 +475,71 @@ proptest! {
         prop_assert_eq!(sorted(hull.vertices()), hull_vertices_brute_force(&points));
     }
 }
+
+/// `convex_hull_of_two_with` against Andrew's hull of the same points, vertex for vertex and name
+/// for name: two lattice hulls that overlap, nest, share points, or are a point or a segment.
+fn check_hull_of_two<K: polydist_polygon::predicates::Kernel>(seed: u64) -> Result<(), String> {
+    use polydist_polygon::{convex_hull_of_two_with, convex_hull_with};
+    let mut rng = SplitMix64::new(seed);
+    let mut cloud = |k: usize, span: i64, o: i64| -> Vec<DVec2> {
+        (0..k)
+            .map(|_| {
+                DVec2::new(
+                    (o + rng.range_i64(0, span)) as f64,
+                    (o + rng.range_i64(0, span)) as f64,
+                )
+            })
+            .collect()
+    };
+    let a = cloud(1 + (seed % 12) as usize, 6, 0);
+    let mut b = cloud(1 + (seed % 7) as usize, 8, (seed % 5) as i64 - 2);
+    if seed % 3 == 0 {
+        b.extend_from_slice(&a[..a.len().min(2)]);
+    }
+    let (ha, hb) = (
+        convex_hull_with::<K>(&a).map_err(|e| e.to_string())?,
+        convex_hull_with::<K>(&b).map_err(|e| e.to_string())?,
+    );
+    let mut pts = ha.vertices().to_vec();
+    pts.extend_from_slice(hb.vertices());
+    let want = convex_hull_with::<K>(&pts).map_err(|e| e.to_string())?;
+    let got = convex_hull_of_two_with::<K>(&pts, ha.len()).map_err(|e| e.to_string())?;
+    let names = |h: &ConvexPolygon| (0..h.len()).map(|i| h.source_index(i)).collect::<Vec<_>>();
+    if got.vertices() != want.vertices() || names(&got) != names(&want) {
+        return Err(format!(
+            "seed {seed}: {pts:?}: {:?} against {:?}",
+            names(&got),
+            names(&want)
+        ));
+    }
+    Ok(())
+}
+
+#[test]
+fn hull_of_two_convex_polygons_is_andrews_hull() {
+    use polydist_polygon::predicates::{Exact, Fast, Robust};
+    for seed in 0..4000 {
+        check_hull_of_two::<Robust>(seed).unwrap();
+    }
+    for seed in 0..400 {
+        check_hull_of_two::<Exact>(seed).unwrap();
+    }
+    // Not two convex polygons (runs out of order): still the hull of the points.
+    let pts = [
+        DVec2::new(3.0, 0.0),
+        DVec2::ZERO,
+        DVec2::new(1.0, 5.0),
+        DVec2::new(2.0, -1.0),
+    ];
+    let h = polydist_polygon::convex_hull_of_two_with::<Robust>(&pts, 3).unwrap();
+    assert_eq!(h.vertices(), convex_hull(&pts).unwrap().vertices());
+    let f = polydist_polygon::convex_hull_of_two_with::<Fast>(&pts, 9).unwrap();
+    assert!((0..f.len()).all(|i| f.source_index(i) < pts.len()));
+}
+
+proptest! {
+    #[test]
+    fn hull_of_two_convex_polygons_proptest(seed in any::<u64>()) {
+        check_hull_of_two::<polydist_polygon::predicates::Robust>(seed).map_err(TestCaseError::fail)?;
+    }
+}

@@ -24,7 +24,7 @@
 //!   pocket of the other (two passes, one per cut of the annulus).
 
 use glam::DVec2;
-use polydist_convex::{Separation, distance_with_hint};
+use polydist_convex::{Closest, Separation, distance_with_hint};
 use polydist_polygon::predicates::{Kernel, Orientation};
 use polydist_polygon::{ConvexPolygon, Feature, Location, SimplePolygon};
 
@@ -286,14 +286,7 @@ fn hull_route<K: Kernel>(
         // in the hulls) and this pair realizes it, so it is optimal. The hulls' caller maps name the
         // polygons' caller features.
         return Ok(Ok(PolygonSeparation::Separated {
-            pair: ClosestPair {
-                distance: closest.distance,
-                squared_distance: closest.squared_distance,
-                point_p: closest.point_p,
-                point_q: closest.point_q,
-                feature_p: closest.feature_p,
-                feature_q: closest.feature_q,
-            },
+            pair: hull_pair(&closest),
             route: Route::HullFeatures,
             stats: SeparationStats::default(),
         }));
@@ -306,6 +299,18 @@ fn hull_route<K: Kernel>(
         route: Route::SeparableChains,
         stats: s.stats,
     }))
+}
+
+/// The hulls' closest pair as the polygons' (features through the hulls' caller maps).
+pub(crate) fn hull_pair(closest: &Closest) -> ClosestPair {
+    ClosestPair {
+        distance: closest.distance,
+        squared_distance: closest.squared_distance,
+        point_p: closest.point_p,
+        point_q: closest.point_q,
+        feature_p: closest.feature_p,
+        feature_q: closest.feature_q,
+    }
 }
 
 /// The hulls meet and the polygons are disjoint: Amato's separator, then the subproblems.

@@ -8,7 +8,9 @@ use polydist_polygon::predicates::{Kernel, is_valid_coordinate};
 use polydist_polygon::{Feature, PolygonError, SimplePolygon, convex_hull_with};
 
 use crate::error::{Chain, SeparationError};
-use crate::polygon::{PolygonSeparation, Route, caller_feature, closed_chain, separating_edge};
+use crate::polygon::{
+    PolygonSeparation, Route, caller_feature, closed_chain, hull_pair, separating_edge,
+};
 use crate::result::{ClosestPair, SeparationStats};
 use crate::sigma::separation_of_chains;
 
@@ -107,14 +109,7 @@ pub fn polyline_to_polygon<K: Kernel>(
         // boundary: the pair realizes the hulls' distance, a lower bound of σ, so it is optimal.
         // (Every edge of `T`'s hull counts as a lid: an edge there goes to section 3.)
         return Ok(PolygonSeparation::Separated {
-            pair: ClosestPair {
-                distance: closest.distance,
-                squared_distance: closest.squared_distance,
-                point_p: closest.point_p,
-                point_q: closest.point_q,
-                feature_p: closest.feature_p,
-                feature_q: closest.feature_q,
-            },
+            pair: hull_pair(&closest),
             route: Route::HullFeatures,
             stats: SeparationStats::default(),
         });

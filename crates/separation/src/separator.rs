@@ -25,7 +25,7 @@ use core::cmp::Ordering;
 
 use glam::DVec2;
 use polydist_polygon::predicates::{Dist2, Kernel, Orientation, Sign};
-use polydist_polygon::{Feature, SimplePolygon};
+use polydist_polygon::{Feature, SimplePolygon, convex_hull_of_two_with};
 
 #[cfg(test)]
 use crate::brute::separation_brute;
@@ -181,92 +181,12 @@ fn hull_indices<K: Kernel>(p: &SimplePolygon) -> Option<Vec<usize>> {
     Some(out)
 }
 
-/// The convex hull of two convex polygons given counter-clockwise, `pts[..split]` and
-/// `pts[split..]`, as indices into `pts`: counter-clockwise from the lexicographically lowest point,
-/// strictly convex, the least index among equal points — what Andrew's algorithm
-/// ([`convex_hull_with`](polydist_polygon::convex_hull_with)) gives on `pts`, in `O(h)` for `h = pts.len()`. A convex polygon's vertices
-/// are two lexicographically ascending runs (counter-clockwise from its lowest vertex to its
-/// highest, and clockwise), so merging the four runs replaces Andrew's sort; the scan is his. Runs
-/// found out of order (inconsistent Fast hulls) are sorted instead.
-fn union_hull<K: Kernel>(pts: &[DVec2], split: usize) -> Vec<usize> {
-    // Lexicographic order, then index: Andrew's order (`+ 0.0` makes −0 and 0 one key).
-    let lex = |i: usize, j: usize| {
-        let (a, b) = (pts[i], pts[j]);
-        (a.x + 0.0)
-            .total_cmp(&(b.x + 0.0))
-            .then((a.y + 0.0).total_cmp(&(b.y + 0.0)))
-            .then(i.cmp(&j))
-    };
-    // Two ascending runs merged into one.
-    let merge = |x: &[usize], y: &[usize]| {
-        let mut out = Vec::with_capacity(x.len() + y.len());
-        let (mut i, mut j) = (0, 0);
-        while i < x.len() && j < y.len() {
-            if lex(x[i], y[j]) == Ordering::Greater {
-                out.push(y[j]);
-                j += 1;
-            } else {
-                out.push(x[i]);
-                i += 1;
-            }
-        }
-        out.extend_from_slice(&x[i..]);
-        out.extend_from_slice(&y[j..]);
-        out
-    };
-    let mut sorted: Vec<usize> = Vec::new();
-    for (s, e) in [(0, split), (split, pts.len())] {
-        if s == e {
-            continue;
-        }
-        let n = e - s;
-        let extreme = |want: Ordering| (s..e).fold(s, |x, i| if lex(i, x) == want { i } else { x });
-        let (lo, hi) = (extreme(Ordering::Less) - s, extreme(Ordering::Greater) - s);
-        // Counter-clockwise from the lowest vertex to the highest, and clockwise: both ascending.
-        let ccw: Vec<usize> = (0..=(hi + n - lo) % n).map(|k| s + (lo + k) % n).collect();
-        let cw: Vec<usize> = (0..=(lo + n - hi) % n)
-            .map(|k| s + (lo + n - k) % n)
-            .collect();
-        sorted = merge(&sorted, &merge(&ccw, &cw));
-    }
-    if sorted
-        .windows(2)
-        .any(|w| lex(w[0], w[1]) == Ordering::Greater)
-    {
-        sorted.sort_by(|&i, &j| lex(i, j));
-    }
-    // One entry per distinct point: the least index (the first in this order).
-    sorted.dedup_by(|later, earlier| pts[*later] == pts[*earlier]);
-    if sorted.len() < 2 {
-        return sorted;
-    }
-    let chain = |order: &mut dyn Iterator<Item = usize>| {
-        let mut stack: Vec<usize> = Vec::new();
-        for i in order {
-            while let [.., a, b] = stack[..] {
-                if K::orient(pts[a], pts[b], pts[i]) == Orientation::CounterClockwise {
-                    break;
-                }
-                stack.pop();
-            }
-            stack.push(i);
-        }
-        stack
-    };
-    let mut lower = chain(&mut sorted.iter().copied());
-    let mut upper = chain(&mut sorted.iter().rev().copied());
-    // Each chain ends where the other begins.
-    lower.pop();
-    upper.pop();
-    lower.extend(upper);
-    lower
-}
-
 /// Step 1 and 2: the bridges of `CH(P ∪ Q)`, the facing chains and the ring of `R` (with its cut
 /// when `P` is pinched). `Err` when one hull contains the other, or `Q` is the pinched polygon:
 /// [`regions`] takes over.
 ///
-/// `O(n + m)`: the hulls, the hull of the `h` hull vertices ([`union_hull`], a merge), the ring.
+/// `O(n + m)`: the hulls, the hull of the `h` hull vertices (`convex_hull_of_two_with`, a merge
+/// of their lexicographic runs), the ring.
 fn facing<K: Kernel>(
     p: &SimplePolygon,
     q: &SimplePolygon,
@@ -278,14 +198,12 @@ fn facing<K: Kernel>(
     let (vp, vq) = (p.vertices(), q.vertices());
     let mut pts: Vec<DVec2> = hp.iter().map(|&i| vp[i]).collect();
     pts.extend(hq.iter().map(|&j| vq[j]));
-    let uh = union_hull::<K>(&pts, hp.len());
+    let uh =
+        convex_hull_of_two_with::<K>(&pts, hp.len()).map_err(|_| SeparationError::Inconsistent)?;
     let h = uh.len();
-    if h == 0 {
-        return Err(SeparationError::Inconsistent);
-    }
     // (is P, position in its own hull list) of union-hull vertex i.
     let tag = |i: usize| {
-        let s = uh[i % h];
+        let s = uh.source_index(i % h);
         if s < hp.len() {
             (true, s)
         } else {
@@ -1466,7 +1384,6 @@ mod tests {
     use crate::brute::{scan, scan_pruned};
     use crate::polygon::closed_chain;
     use polydist_oracle::SplitMix64;
-    use polydist_polygon::convex_hull_with;
     use polydist_polygon::predicates::{Exact, Fast, Robust};
 
     /// Where the extended segment `s` fails property (iii) or (iv), if it does: a boundary edge
@@ -2347,59 +2264,6 @@ mod tests {
             tried > 1000 && multi > 200,
             "{tried} split, {multi} multi-run, {whole} whole"
         );
-    }
-
-    /// `union_hull` against Andrew's hull of the same points (index for index) on pairs of lattice
-    /// hulls that overlap, share points, nest, or are a point or a segment.
-    fn check_union_hull<K: Kernel>(seed: u64) {
-        let mut rng = SplitMix64::new(seed);
-        let mut cloud = |k: usize, span: i64, o: i64| -> Vec<DVec2> {
-            (0..k)
-                .map(|_| {
-                    DVec2::new(
-                        (o + rng.range_i64(0, span)) as f64,
-                        (o + rng.range_i64(0, span)) as f64,
-                    )
-                })
-                .collect()
-        };
-        let a = cloud(1 + (seed % 12) as usize, 6, 0);
-        let mut b = cloud(1 + (seed % 7) as usize, 8, (seed % 5) as i64 - 2);
-        if seed % 3 == 0 {
-            b.extend_from_slice(&a[..a.len().min(2)]);
-        }
-        let (ha, hb) = (
-            convex_hull_with::<K>(&a).expect("valid"),
-            convex_hull_with::<K>(&b).expect("valid"),
-        );
-        let mut pts = ha.vertices().to_vec();
-        pts.extend_from_slice(hb.vertices());
-        let andrew = convex_hull_with::<K>(&pts).expect("valid");
-        let want: Vec<usize> = (0..andrew.len()).map(|i| andrew.source_index(i)).collect();
-        assert_eq!(
-            union_hull::<K>(&pts, ha.len()),
-            want,
-            "seed {seed}: {pts:?}"
-        );
-    }
-
-    #[test]
-    fn union_hull_is_andrews_hull() {
-        for seed in 0..4000 {
-            check_union_hull::<Robust>(seed);
-        }
-        for seed in 0..400 {
-            check_union_hull::<Exact>(seed);
-        }
-        // Inconsistent input (runs out of order) is sorted, never out of range.
-        let pts = [
-            DVec2::new(3.0, 0.0),
-            DVec2::ZERO,
-            DVec2::new(1.0, 5.0),
-            DVec2::new(2.0, -1.0),
-        ];
-        let h = union_hull::<Fast>(&pts, 3);
-        assert!(h.iter().all(|&i| i < pts.len()) && !h.is_empty());
     }
 
     proptest::proptest! {
