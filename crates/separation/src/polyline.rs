@@ -13,6 +13,7 @@ use crate::polygon::{
 };
 use crate::result::{ClosestPair, SeparationStats};
 use crate::sigma::separation_of_chains;
+use crate::simple_distance::segment_to_polygon;
 
 /// σ(T, Q) of an open simple polyline `T` and a simple polygon `Q` whose convex hulls are disjoint:
 /// the minimum distance between `T` and `Q`'s boundary, with a realizing pair.
@@ -30,6 +31,10 @@ use crate::sigma::separation_of_chains;
 /// between two facing *boundaries*, and the rest of an open polyline, which encloses nothing, can
 /// lie inside that region. That case is [`SeparationError::PolylineHullsMeet`];
 /// [`separation_brute`](crate::separation_brute) answers it in `O(nm)`.
+///
+/// A polyline of two vertices is a segment and goes to
+/// [`segment_to_polygon`](crate::segment_to_polygon), which answers every position ([`Route::Scan`],
+/// or [`PolygonSeparation::Intersecting`]).
 ///
 /// Edge `i` of `T` joins its vertices `i` and `i + 1`; repeated consecutive vertices are dropped
 /// (features name the first of a repeat). `T` must be simple (no two non-adjacent edges meet): the
@@ -63,7 +68,7 @@ use crate::sigma::separation_of_chains;
 /// assert_eq!((pair.feature_p, pair.feature_q), (Feature::Vertex(1), Feature::Edge(3)));
 ///
 /// // A path reaching into the square's hull is not taken.
-/// let into = [DVec2::new(-1.0, 0.5), DVec2::new(0.5, 0.5)];
+/// let into = [DVec2::new(-1.0, 0.5), DVec2::new(-0.5, 0.5), DVec2::new(0.5, 0.5)];
 /// assert_eq!(polyline_to_polygon::<Robust>(&into, &sq), Err(SeparationError::PolylineHullsMeet));
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
@@ -86,6 +91,10 @@ pub fn polyline_to_polygon<K: Kernel>(
             chain: Chain::P,
             index,
         });
+    }
+    if let [a, b] = *t {
+        // A segment: the `O(m)` scan answers every position, meeting hulls and contact included.
+        return segment_to_polygon::<K>(a, b, q);
     }
     let ht = convex_hull_with::<K>(t).map_err(|e| match e {
         PolygonError::NonFinite { index } | PolygonError::OutOfRange { index } => {

@@ -373,7 +373,7 @@ fn check_polyline<K: Kernel>(
         Ok(PolygonSeparation::Separated { pair, route, .. }) => {
             prop_assert!(matches!(
                 route,
-                Route::SeparableChains | Route::HullFeatures
+                Route::SeparableChains | Route::HullFeatures | Route::Scan
             ));
             let exact = chain_distance(t, &closed);
             check_optimal(&exact, &pair)?;
@@ -383,7 +383,14 @@ fn check_polyline<K: Kernel>(
             );
             Ok(Some(route))
         }
+        Ok(PolygonSeparation::Intersecting(_)) => {
+            // Only a segment is checked for contact, and only touching boxes can meet.
+            prop_assert!(touching && t.len() == 2);
+            prop_assert!(num_traits::Zero::is_zero(&chain_distance(t, &closed).sq));
+            Ok(None)
+        }
         Err(SeparationError::PolylineHullsMeet) => {
+            prop_assert!(t.len() != 2, "a segment is always answered");
             prop_assert!(touching, "hulls of boxes apart said to meet");
             Ok(None)
         }
@@ -450,11 +457,28 @@ fn polyline_errors_say_what_and_where() {
         polyline_to_polygon::<Robust>(&around, &sq),
         Err(SeparationError::PolylineHullsMeet)
     );
-    let through = [DVec2::new(-1.0, 0.5), DVec2::new(2.0, 0.5)];
+    let through = [
+        DVec2::new(-1.0, 0.5),
+        DVec2::new(0.5, 0.5),
+        DVec2::new(2.0, 0.5),
+    ];
     assert_eq!(
         polyline_to_polygon::<Exact>(&through, &sq),
         Err(SeparationError::PolylineHullsMeet)
     );
+    // A segment is always answered, through the segment scan.
+    let segment = [DVec2::new(-1.0, 0.5), DVec2::new(2.0, 0.5)];
+    assert!(matches!(
+        polyline_to_polygon::<Robust>(&segment, &sq),
+        Ok(PolygonSeparation::Intersecting(_))
+    ));
+    let beside = [DVec2::new(-1.0, 0.5), DVec2::new(0.5, 2.0)];
+    let Ok(PolygonSeparation::Separated { route, .. }) =
+        polyline_to_polygon::<Robust>(&beside, &sq)
+    else {
+        panic!("a segment beside the square");
+    };
+    assert_eq!(route, Route::Scan);
     // A polyline crossing itself is reported when section 3 meets the crossing.
     let bow = [
         DVec2::new(-3.0, 0.0),
