@@ -342,12 +342,11 @@ impl Edge {
             Param::Start | Param::End => false,
         };
         if placed {
-            let ga = g.raw_at::<K>(self.a);
-            if ga != Sign::Zero && ga == g.raw_at::<K>(self.b) {
-                return if g.neg { ga.reversed() } else { ga };
-            }
+            let ends = (g.raw_at::<K>(self.a), g.raw_at::<K>(self.b));
+            self.eval_given_ends::<K>(g, t, ends)
+        } else {
+            self.eval::<K>(g, t)
         }
-        self.eval::<K>(g, t)
     }
 
     /// [`Self::eval_within`] at two parameters of the closed edge, sharing the two degree-2 signs
@@ -360,19 +359,25 @@ impl Edge {
         s: &Param,
         t: &Param,
     ) -> (Sign, Sign) {
-        let (ga, gb) = (g.raw_at::<K>(self.a), g.raw_at::<K>(self.b));
-        let at = |p: &Param| {
-            let raw = match p {
-                Param::Start => ga,
-                Param::End => gb,
-                Param::Root(f) if f.same_root(g) => Sign::Zero,
-                _ if ga != Sign::Zero && ga == gb => ga,
-                // `eval` applies the negation itself.
-                _ => return self.eval::<K>(g, p),
-            };
-            if g.neg { raw.reversed() } else { raw }
+        let ends = (g.raw_at::<K>(self.a), g.raw_at::<K>(self.b));
+        (
+            self.eval_given_ends::<K>(g, s, ends),
+            self.eval_given_ends::<K>(g, t, ends),
+        )
+    }
+
+    /// [`Self::eval`] at a parameter of the closed edge, given `g`'s raw signs at the edge's ends:
+    /// the one place of the rule that a strict sign shared by both ends holds on the whole edge.
+    fn eval_given_ends<K: Kernel>(&self, g: &Affine, t: &Param, (ga, gb): (Sign, Sign)) -> Sign {
+        let raw = match t {
+            Param::Start => ga,
+            Param::End => gb,
+            Param::Root(f) if f.same_root(g) => Sign::Zero,
+            _ if ga != Sign::Zero && ga == gb => ga,
+            // `eval` applies the negation itself.
+            _ => return self.eval::<K>(g, t),
         };
-        (at(s), at(t))
+        if g.neg { raw.reversed() } else { raw }
     }
 
     /// `sign(root_f − e)` for the edge end `e` (start: `t = 0`, end: `t = 1`): `sign(f(e)) ·
