@@ -4,7 +4,7 @@
 
 use glam::DVec2;
 use polydist_convex::{Separation, distance_with_hint};
-use polydist_polygon::predicates::{Kernel, is_valid_coordinate};
+use polydist_polygon::predicates::Kernel;
 use polydist_polygon::{Feature, PolygonError, SimplePolygon, convex_hull_with};
 
 use crate::error::{Chain, SeparationError};
@@ -80,22 +80,12 @@ pub fn polyline_to_polygon<K: Kernel>(
     t: &[DVec2],
     q: &SimplePolygon,
 ) -> Result<PolygonSeparation, SeparationError> {
-    if t.is_empty() {
-        return Err(SeparationError::EmptyChain { chain: Chain::P });
-    }
-    if let Some(index) = t
-        .iter()
-        .position(|v| !is_valid_coordinate(v.x) || !is_valid_coordinate(v.y))
-    {
-        return Err(SeparationError::InvalidCoordinate {
-            chain: Chain::P,
-            index,
-        });
-    }
     if let [a, b] = *t {
-        // A segment: the `O(m)` scan answers every position, meeting hulls and contact included.
+        // A segment: the `O(m)` scan answers every position, meeting hulls and contact included
+        // (and validates both ends).
         return segment_to_polygon::<K>(a, b, q);
     }
+    // The hull validates the polyline: emptiness and every coordinate, the first offender named.
     let ht = convex_hull_with::<K>(t).map_err(|e| match e {
         PolygonError::NonFinite { index } | PolygonError::OutOfRange { index } => {
             SeparationError::InvalidCoordinate {
