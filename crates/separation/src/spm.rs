@@ -9,8 +9,8 @@
 //! each diagonal crossed, the funnel of shortest paths from `s` to the diagonal's ends (a left chain,
 //! the apex, a right chain). The triangle beyond adds its third vertex `w`; the tangent from `w` to the
 //! funnel (the vertex where the path to `w` bends, found by an exponential search from both ends of
-//! the funnel: the chains' turn tests are monotone) becomes `w`'s parent and splits the funnel into the funnels of the triangle's two
-//! other sides. Reconstructed for arms: a chain vertex `c` that is neither the apex nor an end of its
+//! the funnel: the chains' turn tests are monotone) becomes `w`'s parent and splits the funnel into
+//! the funnels of the triangle's two other sides. Reconstructed for arms: a chain vertex `c` that is neither the apex nor an end of its
 //! funnel has its extension (the ray from its neighbour toward the apex through `c`) inside the
 //! funnel; at a split it stays in exactly one child (the tangent is the apex of one child and an
 //! interior chain vertex of the other, which holds its extension), so it is an interior chain vertex
