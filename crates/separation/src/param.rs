@@ -70,6 +70,7 @@ impl Affine {
 }
 
 /// `op(x − c, w1 − w0)` in a ring.
+#[inline(always)]
 pub(crate) fn op<R: Ring>(cross: bool, x: (&R, &R), c: (&R, &R), w0: (&R, &R), w1: (&R, &R)) -> R {
     let (dx, dy) = (x.0.sub(c.0), x.1.sub(c.1));
     let (ex, ey) = (w1.0.sub(w0.0), w1.1.sub(w0.1));
@@ -80,6 +81,7 @@ pub(crate) fn op<R: Ring>(cross: bool, x: (&R, &R), c: (&R, &R), w0: (&R, &R), w
     }
 }
 
+#[inline(always)]
 pub(crate) fn pt<R>(x: &[R], i: usize) -> (&R, &R) {
     (&x[2 * i], &x[2 * i + 1])
 }
@@ -102,6 +104,7 @@ impl Polynomial<16> for RootPair {
 
 /// The coefficients of `F(t) = (h − x(t))·(l − x(t))`, `x(t) = a + t(b − a)`, in a ring:
 /// `A = |b − a|²`, `B = (2a − h − l)·(b − a)`, `C = (a − h)·(a − l)`. Points `[a, b, h, l]` first.
+#[inline(always)]
 pub(crate) fn quad<R: Ring>(x: &[R]) -> (R, R, R) {
     let (a, b, h, l) = (pt(x, 0), pt(x, 1), pt(x, 2), pt(x, 3));
     let (ex, ey) = (b.0.sub(a.0), b.1.sub(a.1));
@@ -176,6 +179,7 @@ impl Polynomial<10> for EndSide {
     }
 }
 
+#[inline(always)]
 pub(crate) fn flat<const N: usize>(pts: &[DVec2]) -> [f64; N] {
     core::array::from_fn(|i| {
         if i % 2 == 0 {

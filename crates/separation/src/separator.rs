@@ -75,6 +75,25 @@ pub(crate) struct Region {
     /// wall) through a vertex of the geodesic that cuts the weakly simple ring into two strictly
     /// simple halves (triangulated apart and glued along it).
     pub(crate) cut: Option<(usize, usize)>,
+    /// The containing case's second pass: only pairs whose `Q` point lies strictly beyond `P`'s
+    /// extreme level in a direction are needed (see [`Beyond`]); `None`: every pair.
+    pub(crate) beyond: Option<Beyond>,
+}
+
+/// In the containing case, the pass that need only catch the sights the other pass misses: those
+/// end at a point of `∂K` strictly beyond `level` (`P`'s extreme level) in direction `turn` (as in
+/// [`turned`]). `Q` subchains are trimmed to the edges with an end strictly beyond it.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Beyond {
+    pub(crate) turn: u8,
+    pub(crate) level: f64,
+}
+
+impl Beyond {
+    /// Whether `v` lies strictly beyond the level (an exact comparison of input coordinates).
+    fn holds(&self, v: DVec2) -> bool {
+        turned(v, self.turn).y > self.level
+    }
 }
 
 impl Region {
@@ -135,6 +154,7 @@ impl Region {
             top,
             gap: None,
             cut: None,
+            beyond: None,
         }
     }
 
@@ -474,7 +494,14 @@ fn pinch_cut<K: Kernel>(r: &Region) -> Option<(usize, usize)> {
 ///   rises from then on, so it never comes back down to `c_B`. So two regions: the annulus cut along
 ///   `c_T` (a weakly simple ring: `p_top` and `c_T`'s other end twice) and the annulus cut along
 ///   `c_B`; each is triangulated in two halves split by the other cut, and `σ` is the least over the
-///   subproblems of both. The lid is a ring edge of the `Q` wall, the region's `gap`.
+///   subproblems of both. The lid is a ring edge of the `Q` wall, the region's `gap`. The pair the
+///   `c_T` region misses has a sight meeting `c_T` at a point `z` other than its start `p` and
+///   other than `p_top` (a sight through a vertex of `P` is no closest pair), so strictly above the
+///   top level, while `p` is not: the sight rises, and its end on `∂K` lies strictly above `P`'s
+///   top level. So the `c_B` region need only look at `Q` points strictly above it (or, the
+///   mirror, the `c_T` region at points strictly below the bottom level): [`Beyond`], on the pass
+///   with fewer wall vertices beyond, whose `Q` subchains are trimmed to the edges with an end
+///   there and dropped when they have none.
 ///
 /// `O(n + m)`.
 fn pocket_regions<K: Kernel>(
@@ -587,10 +614,25 @@ fn pocket_regions<K: Kernel>(
         r.cut = w.map(|w| (r.ring_of_p(other_p), w));
         r.cut.map(|_| r).ok_or(SeparationError::Inconsistent)
     };
-    Ok(Some(vec![
-        make(top, vt, bottom, vb)?,
-        make(bottom, vb, top, vt)?,
-    ]))
+    let (mut cut_t, mut cut_b) = (make(top, vt, bottom, vb)?, make(bottom, vb, top, vt)?);
+    // The region cut along `c_T` misses only sights meeting `c_T`, which end strictly above `P`'s
+    // top level, and symmetrically: one of the two passes need only catch those. Restrict the one
+    // with fewer wall vertices beyond.
+    let above = Beyond {
+        turn: 0,
+        level: turned(vp[top], 0).y,
+    };
+    let below = Beyond {
+        turn: 2,
+        level: turned(vp[bottom], 2).y,
+    };
+    let count = |b: Beyond| kp.iter().filter(|&&v| b.holds(v)).count();
+    if count(above) <= count(below) {
+        cut_b.beyond = Some(above);
+    } else {
+        cut_t.beyond = Some(below);
+    }
+    Ok(Some(vec![cut_t, cut_b]))
 }
 
 /// Triangulates the weakly simple ring of a pinched or containing region through its cut `(u, w)`:
@@ -1138,6 +1180,9 @@ fn solve_pass<K: Kernel>(
             if qlo > qhi {
                 continue;
             }
+            let Some((qlo, qhi)) = trimmed(r, qlo, qhi) else {
+                continue;
+            };
             qcv.clear();
             qcv.extend((qlo..=qhi).map(|k| r.ring[k]));
             stats.subproblem_vertices += pcv.len() + qcv.len();
@@ -1191,6 +1236,19 @@ fn solve_pass<K: Kernel>(
             }
         }
     }
+}
+
+/// The `Q` subchain `qlo..=qhi` (ring positions) trimmed to the edges with an end strictly beyond
+/// the pass's [`Beyond`] level, if it has one: from the vertex before the first vertex beyond to the
+/// one after the last. Every point strictly beyond lies on such an edge. `None` when no vertex is
+/// beyond (no point of the subchain is). `O(qhi − qlo)` coordinate comparisons.
+fn trimmed(r: &Region, qlo: usize, qhi: usize) -> Option<(usize, usize)> {
+    let Some(b) = r.beyond else {
+        return Some((qlo, qhi));
+    };
+    let first = (qlo..=qhi).find(|&k| b.holds(r.ring[k]))?;
+    let last = (first..=qhi).rev().find(|&k| b.holds(r.ring[k]))?;
+    Some((first.saturating_sub(1).max(qlo), (last + 1).min(qhi)))
 }
 
 /// The exact scan of two parts: pruned by bounding boxes when large (the containing case's long
@@ -1682,7 +1740,19 @@ mod tests {
                         .collect();
                     match held[..] {
                         [] => return Err(format!("the sight from {i} to {j} is held by no pass")),
-                        [k] => only[k] += 1,
+                        [k] => {
+                            only[k] += 1;
+                            // A pass restricted to `Q` points beyond a level must not be the only
+                            // one to hold a sight ending short of it.
+                            if let Some(b) = plan.passes[k].region.beyond
+                                && !b.holds(vq[j])
+                            {
+                                return Err(format!(
+                                    "the sight from {i} to {j} is held only by pass {k}, \
+                                     which looks only beyond {b:?}"
+                                ));
+                            }
+                        }
                         _ => {}
                     }
                 }
@@ -2515,6 +2585,63 @@ mod tests {
                 check_pair_v::<Exact>(a, b, true).unwrap_or_else(|e| panic!("{tip}: {e}"));
             }
         }
+    }
+
+    /// `trimmed` keeps exactly the edges of the subchain with an end strictly beyond the level:
+    /// on random small lattice rings, levels and subchains, in both directions.
+    #[test]
+    fn trimming_keeps_every_edge_reaching_beyond() {
+        let mut rng = SplitMix64::new(0x7e1);
+        let mut dropped = 0;
+        for _ in 0..4000 {
+            let n = 2 + rng.below(12) as usize;
+            let ring: Vec<DVec2> = (0..n)
+                .map(|_| DVec2::new(rng.below(5) as f64, rng.below(5) as f64))
+                .collect();
+            let turn = if rng.below(2) == 0 { 0 } else { 2 };
+            let level = rng.below(5) as f64 - if turn == 2 { 4.0 } else { 0.0 };
+            let qlo = rng.below(n as u64) as usize;
+            let qhi = qlo + rng.below((n - qlo) as u64) as usize;
+            let beyond = Beyond { turn, level };
+            let r = Region {
+                ring: ring.clone(),
+                src: (0..n).collect(),
+                qt: n - 1,
+                pb: 0,
+                np: 1,
+                top: 1,
+                gap: None,
+                cut: None,
+                beyond: Some(beyond),
+            };
+            // The edges (k, k + 1) within the subchain with an end beyond, as first vertices.
+            let reaching: Vec<usize> = (qlo..qhi)
+                .filter(|&k| beyond.holds(ring[k]) || beyond.holds(ring[k + 1]))
+                .collect();
+            let any = (qlo..=qhi).any(|k| beyond.holds(ring[k]));
+            match trimmed(&r, qlo, qhi) {
+                None => {
+                    assert!(!any, "{ring:?} {qlo}..={qhi} {beyond:?}: dropped");
+                    dropped += 1;
+                }
+                Some((lo, hi)) => {
+                    assert!(any && qlo <= lo && lo <= hi && hi <= qhi);
+                    // Every vertex beyond and every edge reaching beyond is kept, and the ends are
+                    // such a vertex or an edge's end (nothing more is kept at the ends).
+                    assert!((qlo..=qhi).all(|k| !beyond.holds(ring[k]) || (lo..=hi).contains(&k)));
+                    assert!(reaching.iter().all(|&k| lo <= k && k < hi));
+                    assert!(beyond.holds(ring[lo]) || reaching.contains(&lo));
+                    assert!(beyond.holds(ring[hi]) || (hi > 0 && reaching.contains(&(hi - 1))));
+                }
+            }
+        }
+        assert!(dropped > 0);
+        // Without a restriction the subchain is kept whole.
+        let r = Region {
+            beyond: None,
+            ..Region::from_chains(&[DVec2::ZERO], &[DVec2::X, DVec2::Y], 0, 0, &[0, 1])
+        };
+        assert_eq!(trimmed(&r, 1, 2), Some((1, 2)));
     }
 
     /// The pruned scan is the scan, feature for feature (ties included), on random and lattice
