@@ -75,24 +75,25 @@ pub(crate) struct Region {
     /// wall) through a vertex of the geodesic that cuts the weakly simple ring into two strictly
     /// simple halves (triangulated apart and glued along it).
     pub(crate) cut: Option<(usize, usize)>,
-    /// The containing case's second pass: only pairs whose `Q` point lies strictly beyond `P`'s
-    /// extreme level in a direction are needed (see [`Beyond`]); `None`: every pair.
-    pub(crate) beyond: Option<Beyond>,
+    /// The containing case: the `Q` points whose pairs this pass answers for (see [`Share`]);
+    /// `None`: every pair.
+    pub(crate) share: Option<Share>,
 }
 
-/// In the containing case, the pass that need only catch the sights the other pass misses: those
-/// end at a point of `∂K` strictly beyond `level` (`P`'s extreme level) in direction `turn` (as in
-/// [`turned`]). `Q` subchains are trimmed to the edges with an end strictly beyond it.
+/// In the containing case, the `Q` points whose closest pairs a pass answers for: those strictly
+/// above `level` (`above`), or those at or below it, in direction `turn` (as in [`turned`]); `level`
+/// is `P`'s top level. `Q` subchains are trimmed to the edges with an end in the share.
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct Beyond {
+pub(crate) struct Share {
     pub(crate) turn: u8,
     pub(crate) level: f64,
+    pub(crate) above: bool,
 }
 
-impl Beyond {
-    /// Whether `v` lies strictly beyond the level (an exact comparison of input coordinates).
+impl Share {
+    /// Whether `v` is in the share (an exact comparison of input coordinates).
     fn holds(&self, v: DVec2) -> bool {
-        turned(v, self.turn).y > self.level
+        (turned(v, self.turn).y > self.level) == self.above
     }
 }
 
@@ -154,7 +155,7 @@ impl Region {
             top,
             gap: None,
             cut: None,
-            beyond: None,
+            share: None,
         }
     }
 
@@ -494,14 +495,16 @@ fn pinch_cut<K: Kernel>(r: &Region) -> Option<(usize, usize)> {
 ///   rises from then on, so it never comes back down to `c_B`. So two regions: the annulus cut along
 ///   `c_T` (a weakly simple ring: `p_top` and `c_T`'s other end twice) and the annulus cut along
 ///   `c_B`; each is triangulated in two halves split by the other cut, and `σ` is the least over the
-///   subproblems of both. The lid is a ring edge of the `Q` wall, the region's `gap`. The pair the
-///   `c_T` region misses has a sight meeting `c_T` at a point `z` other than its start `p` and
-///   other than `p_top` (a sight through a vertex of `P` is no closest pair), so strictly above the
-///   top level, while `p` is not: the sight rises, and its end on `∂K` lies strictly above `P`'s
-///   top level. So the `c_B` region need only look at `Q` points strictly above it (or, the
-///   mirror, the `c_T` region at points strictly below the bottom level): [`Beyond`], on the pass
-///   with fewer wall vertices beyond, whose `Q` subchains are trimmed to the edges with an end
-///   there and dropped when they have none.
+///   subproblems of both. The lid is a ring edge of the `Q` wall, the region's `gap`. Each pass
+///   answers for a share of `Q` ([`Share`]): a closest pair `(p, y)` whose sight meets `c_T` does so
+///   at a point `z` other than `p` and other than `p_top` (a sight through a vertex of `P` is no
+///   closest pair), strictly above `P`'s top level while `p` is not, so the sight rises and `y` lies
+///   strictly above the top level. Conversely, when `y` lies strictly above it the sight stays at or
+///   above `p`'s level, which is not below `P`'s bottom level, so it misses `c_B` (it could meet it
+///   only at `p = p_bot`, its own start). So the `c_T` region answers for the `Q` points at or below
+///   the top level, the `c_B` region for those strictly above (any level between `P`'s bottom and
+///   top levels would do), and each `Q` subchain is trimmed to the edges with an end in its pass's
+///   share (and dropped when it has none).
 ///
 /// `O(n + m)`.
 fn pocket_regions<K: Kernel>(
@@ -615,23 +618,19 @@ fn pocket_regions<K: Kernel>(
         r.cut.map(|_| r).ok_or(SeparationError::Inconsistent)
     };
     let (mut cut_t, mut cut_b) = (make(top, vt, bottom, vb)?, make(bottom, vb, top, vt)?);
-    // The region cut along `c_T` misses only sights meeting `c_T`, which end strictly above `P`'s
-    // top level, and symmetrically: one of the two passes need only catch those. Restrict the one
-    // with fewer wall vertices beyond.
-    let above = Beyond {
+    // A closest pair whose `Q` point lies strictly above `P`'s top level misses `c_B`, one whose
+    // `Q` point does not misses `c_T`: each pass answers for one share.
+    let level = turned(vp[top], 0).y;
+    cut_t.share = Some(Share {
         turn: 0,
-        level: turned(vp[top], 0).y,
-    };
-    let below = Beyond {
-        turn: 2,
-        level: turned(vp[bottom], 2).y,
-    };
-    let count = |b: Beyond| kp.iter().filter(|&&v| b.holds(v)).count();
-    if count(above) <= count(below) {
-        cut_b.beyond = Some(above);
-    } else {
-        cut_t.beyond = Some(below);
-    }
+        level,
+        above: false,
+    });
+    cut_b.share = Some(Share {
+        turn: 0,
+        level,
+        above: true,
+    });
     Ok(Some(vec![cut_t, cut_b]))
 }
 
@@ -1238,12 +1237,13 @@ fn solve_pass<K: Kernel>(
     }
 }
 
-/// The `Q` subchain `qlo..=qhi` (ring positions) trimmed to the edges with an end strictly beyond
-/// the pass's [`Beyond`] level, if it has one: from the vertex before the first vertex beyond to the
-/// one after the last. Every point strictly beyond lies on such an edge. `None` when no vertex is
-/// beyond (no point of the subchain is). `O(qhi − qlo)` coordinate comparisons.
+/// The `Q` subchain `qlo..=qhi` (ring positions) trimmed to the edges with an end in the pass's
+/// [`Share`], if it has one: from the vertex before the first vertex in it to the one after the
+/// last. Every point of the share lies on such an edge (an edge with both ends outside the share
+/// lies outside it: each share is a half-plane). `None` when no vertex is in the share (no point of
+/// the subchain is). `O(qhi − qlo)` coordinate comparisons.
 fn trimmed(r: &Region, qlo: usize, qhi: usize) -> Option<(usize, usize)> {
-    let Some(b) = r.beyond else {
+    let Some(b) = r.share else {
         return Some((qlo, qhi));
     };
     let first = (qlo..=qhi).find(|&k| b.holds(r.ring[k]))?;
@@ -1740,20 +1740,20 @@ mod tests {
                         .collect();
                     match held[..] {
                         [] => return Err(format!("the sight from {i} to {j} is held by no pass")),
-                        [k] => {
-                            only[k] += 1;
-                            // A pass restricted to `Q` points beyond a level must not be the only
-                            // one to hold a sight ending short of it.
-                            if let Some(b) = plan.passes[k].region.beyond
-                                && !b.holds(vq[j])
-                            {
-                                return Err(format!(
-                                    "the sight from {i} to {j} is held only by pass {k}, \
-                                     which looks only beyond {b:?}"
-                                ));
-                            }
-                        }
+                        [k] => only[k] += 1,
                         _ => {}
+                    }
+                    // The pass answering for the sight's `Q` end must hold it.
+                    for (k, b) in plan.passes.iter().enumerate() {
+                        if let Some(share) = b.region.share
+                            && share.holds(vq[j])
+                            && !held.contains(&k)
+                        {
+                            return Err(format!(
+                                "the sight from {i} to {j} ends in pass {k}'s share {share:?}, \
+                                 which does not hold it"
+                            ));
+                        }
                     }
                 }
             }
@@ -2587,10 +2587,10 @@ mod tests {
         }
     }
 
-    /// `trimmed` keeps exactly the edges of the subchain with an end strictly beyond the level:
-    /// on random small lattice rings, levels and subchains, in both directions.
+    /// `trimmed` keeps exactly the edges of the subchain with an end in the share: on random small
+    /// lattice rings, levels, subchains and shares (above or not, in both directions).
     #[test]
-    fn trimming_keeps_every_edge_reaching_beyond() {
+    fn trimming_keeps_every_edge_reaching_the_share() {
         let mut rng = SplitMix64::new(0x7e1);
         let mut dropped = 0;
         for _ in 0..4000 {
@@ -2602,7 +2602,11 @@ mod tests {
             let level = rng.below(5) as f64 - if turn == 2 { 4.0 } else { 0.0 };
             let qlo = rng.below(n as u64) as usize;
             let qhi = qlo + rng.below((n - qlo) as u64) as usize;
-            let beyond = Beyond { turn, level };
+            let share = Share {
+                turn,
+                level,
+                above: rng.below(2) == 0,
+            };
             let r = Region {
                 ring: ring.clone(),
                 src: (0..n).collect(),
@@ -2612,33 +2616,33 @@ mod tests {
                 top: 1,
                 gap: None,
                 cut: None,
-                beyond: Some(beyond),
+                share: Some(share),
             };
-            // The edges (k, k + 1) within the subchain with an end beyond, as first vertices.
+            // The edges (k, k + 1) within the subchain with an end in the share, as first vertices.
             let reaching: Vec<usize> = (qlo..qhi)
-                .filter(|&k| beyond.holds(ring[k]) || beyond.holds(ring[k + 1]))
+                .filter(|&k| share.holds(ring[k]) || share.holds(ring[k + 1]))
                 .collect();
-            let any = (qlo..=qhi).any(|k| beyond.holds(ring[k]));
+            let any = (qlo..=qhi).any(|k| share.holds(ring[k]));
             match trimmed(&r, qlo, qhi) {
                 None => {
-                    assert!(!any, "{ring:?} {qlo}..={qhi} {beyond:?}: dropped");
+                    assert!(!any, "{ring:?} {qlo}..={qhi} {share:?}: dropped");
                     dropped += 1;
                 }
                 Some((lo, hi)) => {
                     assert!(any && qlo <= lo && lo <= hi && hi <= qhi);
-                    // Every vertex beyond and every edge reaching beyond is kept, and the ends are
+                    // Every vertex in the share and every edge reaching it is kept, and the ends are
                     // such a vertex or an edge's end (nothing more is kept at the ends).
-                    assert!((qlo..=qhi).all(|k| !beyond.holds(ring[k]) || (lo..=hi).contains(&k)));
+                    assert!((qlo..=qhi).all(|k| !share.holds(ring[k]) || (lo..=hi).contains(&k)));
                     assert!(reaching.iter().all(|&k| lo <= k && k < hi));
-                    assert!(beyond.holds(ring[lo]) || reaching.contains(&lo));
-                    assert!(beyond.holds(ring[hi]) || (hi > 0 && reaching.contains(&(hi - 1))));
+                    assert!(share.holds(ring[lo]) || reaching.contains(&lo));
+                    assert!(share.holds(ring[hi]) || (hi > 0 && reaching.contains(&(hi - 1))));
                 }
             }
         }
         assert!(dropped > 0);
         // Without a restriction the subchain is kept whole.
         let r = Region {
-            beyond: None,
+            share: None,
             ..Region::from_chains(&[DVec2::ZERO], &[DVec2::X, DVec2::Y], 0, 0, &[0, 1])
         };
         assert_eq!(trimmed(&r, 1, 2), Some((1, 2)));
