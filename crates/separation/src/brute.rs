@@ -366,15 +366,25 @@ fn bounds(c: Cand, p: &[DVec2], q: &[DVec2]) -> (f64, f64) {
 /// project strictly inside the edge are skipped (same answer, fewer comparisons: Amato's separator
 /// scans its subproblems this way). `O(n_p · n_q)`.
 pub(crate) fn scan<K: Kernel>(p: &[DVec2], q: &[DVec2], interior_only: bool) -> ClosestPair {
-    scan_best::<K>(p, q, interior_only).pair(p, q)
+    scan_best::<K>(p, q, interior_only, f64::INFINITY)
+        .0
+        .pair(p, q)
 }
 
-/// [`scan`]'s winner, nothing constructed yet.
-pub(crate) fn scan_winner<K: Kernel>(p: &[DVec2], q: &[DVec2], interior_only: bool) -> Winner {
-    scan_best::<K>(p, q, interior_only).winner(p, q)
+/// An `interior_only` [`scan`] that need only beat a distance known elsewhere, whose square is at
+/// most `cut`: candidates whose squared distance is bounded strictly above `cut` are skipped. The
+/// winner, nothing constructed yet, and an upper bound of its squared distance (`∞` when unknown).
+/// If some pair is strictly nearer than the known distance the winner is the scan's nearest pair;
+/// otherwise it is some pair of the chains (a true distance, never below the nearest).
+pub(crate) fn scan_winner_below<K: Kernel>(p: &[DVec2], q: &[DVec2], cut: f64) -> (Winner, f64) {
+    let (c, hi) = scan_best::<K>(p, q, true, cut);
+    (c.winner(p, q), hi)
 }
 
-fn scan_best<K: Kernel>(p: &[DVec2], q: &[DVec2], interior_only: bool) -> Cand {
+/// [`scan`]'s loop; candidates bounded strictly above `cut` (squared) are skipped (`interior_only`
+/// only: the bounds are those of the line distances). The winner and its squared distance's upper
+/// bound.
+fn scan_best<K: Kernel>(p: &[DVec2], q: &[DVec2], interior_only: bool, cut: f64) -> (Cand, f64) {
     let mut best = Cand::Vv(0, 0);
     let dist = |c: Cand| c.scan_dist(p, q, interior_only);
     // A candidate bounded strictly above the best cannot win, one bounded strictly below it wins:
@@ -382,7 +392,7 @@ fn scan_best<K: Kernel>(p: &[DVec2], q: &[DVec2], interior_only: bool) -> Cand {
     let mut best_b = best.scan_bounds(p, q, interior_only);
     let mut consider = |c: Cand| {
         let b = c.scan_bounds(p, q, interior_only);
-        if b.0 > best_b.1 || !admitted::<K>(c, p, q, interior_only) {
+        if b.0 > best_b.1 || b.0 > cut || !admitted::<K>(c, p, q, interior_only) {
             return;
         }
         if b.1 < best_b.0 || cmp_scan::<K>(dist(c), dist(best)) == Ordering::Less {
@@ -410,7 +420,7 @@ fn scan_best<K: Kernel>(p: &[DVec2], q: &[DVec2], interior_only: bool) -> Cand {
     }
     // A vertex–edge candidate whose nearest point is an endpoint is never strictly better than that
     // vertex–vertex pair, which was considered first: so the winner's foot is strictly inside.
-    best
+    (best, best_b.1)
 }
 
 /// A node of [`scan_pruned`]'s box hierarchy over a chain: it owns the vertices `s..e` and the
@@ -479,29 +489,37 @@ fn box_gap(a: &BoxNode, b: &BoxNode) -> Dist2 {
 /// chains are long and mostly far from each other, far fewer. `O(n_p + n_q)` extra space.
 #[cfg(test)]
 pub(crate) fn scan_pruned<K: Kernel>(p: &[DVec2], q: &[DVec2], interior_only: bool) -> ClosestPair {
-    scan_pruned_best::<K>(p, q, interior_only).pair(p, q)
+    scan_pruned_best::<K>(p, q, interior_only, f64::INFINITY)
+        .0
+        .pair(p, q)
 }
 
-/// [`scan_pruned`]'s winner, nothing constructed yet.
-pub(crate) fn scan_pruned_winner<K: Kernel>(
+/// [`scan_winner_below`] with [`scan_pruned`]'s exact pruning.
+pub(crate) fn scan_pruned_winner_below<K: Kernel>(
+    p: &[DVec2],
+    q: &[DVec2],
+    cut: f64,
+) -> (Winner, f64) {
+    let (c, hi) = scan_pruned_best::<K>(p, q, true, cut);
+    (c.winner(p, q), hi)
+}
+
+fn scan_pruned_best<K: Kernel>(
     p: &[DVec2],
     q: &[DVec2],
     interior_only: bool,
-) -> Winner {
-    scan_pruned_best::<K>(p, q, interior_only).winner(p, q)
-}
-
-fn scan_pruned_best<K: Kernel>(p: &[DVec2], q: &[DVec2], interior_only: bool) -> Cand {
+    cut: f64,
+) -> (Cand, f64) {
     let (bp, bq) = (boxes(p), boxes(q));
     let mut best = Cand::Vv(0, 0);
     let dist = |c: Cand| c.scan_dist(p, q, interior_only);
     let mut best_d = dist(best);
-    // As in `scan`: with `interior_only`, candidates bounded strictly above the best are skipped and
-    // candidates bounded strictly below it are taken.
+    // As in `scan`: with `interior_only`, candidates bounded strictly above the best (or above
+    // `cut`) are skipped and candidates bounded strictly below it are taken.
     let mut best_b = best.scan_bounds(p, q, interior_only);
     let mut consider = |c: Cand, best: &mut Cand, best_d: &mut Dist2| {
         let b = c.scan_bounds(p, q, interior_only);
-        if b.0 > best_b.1 || !admitted::<K>(c, p, q, interior_only) {
+        if b.0 > best_b.1 || b.0 > cut || !admitted::<K>(c, p, q, interior_only) {
             return;
         }
         let d = dist(c);
@@ -561,7 +579,29 @@ fn scan_pruned_best<K: Kernel>(p: &[DVec2], q: &[DVec2], interior_only: bool) ->
         }
         stack.extend(next);
     }
-    best
+    (best, best_b.1)
+}
+
+/// An upper bound of the squared distance `d` (a point pair, or a point and a closed segment),
+/// from [`bounds`]: the nearer end's, or the line's when the foot is strictly inside the segment
+/// (exact dot signs). `∞` when the bounds give up.
+pub(crate) fn upper_bound<K: Kernel>(d: Dist2) -> f64 {
+    let pp = |v: DVec2, w: DVec2| bounds(Cand::Vv(0, 0), &[v], &[w]).1;
+    match d {
+        Dist2::PointPoint(v, w) => pp(v, w),
+        Dist2::PointSegment(v, a, b) => {
+            let ends = pp(v, a).min(pp(v, b));
+            if a != b
+                && K::dot_sign(a, v, a, b) == Sign::Positive
+                && K::dot_sign(b, v, b, a) == Sign::Positive
+            {
+                ends.min(bounds(Cand::QvPe(0, 0), &[a, b], &[v]).1)
+            } else {
+                ends
+            }
+        }
+        _ => f64::INFINITY,
+    }
 }
 
 #[cfg(test)]
@@ -634,6 +674,102 @@ mod tests {
         }
         assert!(bracketed > 20_000, "{bracketed}");
         assert!(near > 1_000, "{near}");
+    }
+
+    /// `upper_bound` is at least the exact squared distance of a point pair or a point and a closed
+    /// segment, and finite on ordinary input.
+    #[test]
+    fn upper_bound_is_above_the_exact_squared_distance() {
+        let mut rng = SplitMix64::new(0x0bb0);
+        let mut finite = 0;
+        for round in 0..24_000 {
+            let class = round % 5;
+            let (v, a) = (point(&mut rng, class), point(&mut rng, class));
+            let b = if round % 7 == 0 {
+                a
+            } else {
+                point(&mut rng, class)
+            };
+            for (d, exact) in [
+                (Dist2::PointPoint(v, a), squared_distance_point_point(v, a)),
+                (
+                    Dist2::PointSegment(v, a, b),
+                    squared_distance_point_segment(v, a, b),
+                ),
+            ] {
+                let hi = upper_bound::<Robust>(d);
+                if hi.is_finite() {
+                    finite += 1;
+                    assert!(
+                        exact.expect("finite") <= to_rational(hi).expect("finite"),
+                        "{d:?} {hi}"
+                    );
+                }
+            }
+        }
+        assert!(finite > 35_000, "{finite}");
+    }
+
+    /// With a cut from the distance `G` of some pair, the scans skip what cannot beat `G`: when the
+    /// nearest pair is strictly nearer than `G` they return the scan's features exactly; otherwise
+    /// a pair no nearer than the nearest.
+    #[test]
+    fn scans_below_a_cut_keep_what_beats_it() {
+        let mut rng = SplitMix64::new(0xc07);
+        let (mut beaten, mut not) = (0, 0);
+        for round in 0..3000 {
+            let class = [0, 1, 4][round % 3];
+            let p: Vec<DVec2> = (0..1 + rng.index(12))
+                .map(|_| point(&mut rng, class))
+                .collect();
+            let q: Vec<DVec2> = (0..1 + rng.index(12))
+                .map(|_| point(&mut rng, class) + DVec2::new(0.75, 0.0))
+                .collect();
+            let nearest = scan::<Robust>(&p, &q, true);
+            let near = match (nearest.feature_p, nearest.feature_q) {
+                (Feature::Vertex(i), Feature::Vertex(j)) => Dist2::PointPoint(p[i], q[j]),
+                (Feature::Vertex(i), Feature::Edge(j)) => Dist2::PointSegment(p[i], q[j], q[j + 1]),
+                (Feature::Edge(i), Feature::Vertex(j)) => Dist2::PointSegment(q[j], p[i], p[i + 1]),
+                _ => unreachable!("a scan reports a vertex"),
+            };
+            // `G`: the nearest pair itself (a tie: nothing beats it), or a random vertex pair.
+            let g = if round % 4 == 0 {
+                near
+            } else {
+                Dist2::PointPoint(p[rng.index(p.len())], q[rng.index(q.len())])
+            };
+            let cut = upper_bound::<Robust>(g);
+            for (w, hi) in [
+                scan_winner_below::<Robust>(&p, &q, cut),
+                scan_pruned_winner_below::<Robust>(&p, &q, cut),
+            ] {
+                let got = w.pair();
+                let gd = w.cand.dist(&p, &q);
+                assert!(
+                    to_rational(hi).is_none_or(|h| {
+                        let e = match gd {
+                            Dist2::PointPoint(x, y) => squared_distance_point_point(x, y),
+                            Dist2::PointSegment(x, y, z) => squared_distance_point_segment(x, y, z),
+                            _ => unreachable!(),
+                        };
+                        e.expect("finite") <= h
+                    }),
+                    "the returned bound is below the winner's distance"
+                );
+                if Robust::cmp_dist2(near, g) == Ordering::Less {
+                    beaten += 1;
+                    assert_eq!(
+                        (got.feature_p, got.feature_q),
+                        (nearest.feature_p, nearest.feature_q),
+                        "{p:?} {q:?} cut {cut}"
+                    );
+                } else {
+                    not += 1;
+                    assert_ne!(Robust::cmp_dist2(gd, near), Ordering::Less);
+                }
+            }
+        }
+        assert!(beaten > 1000 && not > 1000, "{beaten} {not}");
     }
 
     #[test]

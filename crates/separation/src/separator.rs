@@ -29,7 +29,7 @@ use polydist_polygon::{Feature, SimplePolygon, convex_hull_of_two_with};
 
 #[cfg(test)]
 use crate::brute::separation_brute;
-use crate::brute::{Winner, scan_pruned_winner, scan_winner};
+use crate::brute::{Winner, scan_pruned_winner_below, scan_winner_below, upper_bound};
 use crate::error::SeparationError;
 use crate::geodesic::{Hit, first_hit_within, merge_collinear, shortest_path};
 use crate::param::{Affine, Edge, Param};
@@ -1120,11 +1120,11 @@ fn solve_with<K: Kernel>(
 ) -> Result<(ClosestPair, SeparationStats), SeparationError> {
     let (p, q) = if plan.swapped { (q, p) } else { (p, q) };
     let mut stats = SeparationStats::default();
-    let mut best: Option<(Found, Dist2)> = None;
+    let mut best: Option<Best> = None;
     for b in &plan.passes {
         solve_pass::<K>(p, q, b, scan_below, &mut stats, &mut best);
     }
-    let (found, _) = best.ok_or(SeparationError::Inconsistent)?;
+    let Best { found, .. } = best.ok_or(SeparationError::Inconsistent)?;
     let pair = match found {
         Found::Pair(pair) => pair,
         Found::Scanned(w, feature_p, feature_q) => ClosestPair {
@@ -1154,6 +1154,14 @@ enum Found {
     Scanned(Winner, Feature, Feature),
 }
 
+/// The best answer so far, its squared distance, and an upper bound of that in `f64` (from the
+/// scans' filter bounds): scans skip the candidates bounded strictly above it.
+struct Best {
+    found: Found,
+    d: Dist2,
+    cut: f64,
+}
+
 /// The subproblems of one pass, folded into `best`.
 fn solve_pass<K: Kernel>(
     p: &SimplePolygon,
@@ -1161,7 +1169,7 @@ fn solve_pass<K: Kernel>(
     b: &Built,
     scan_below: usize,
     stats: &mut SeparationStats,
-    best: &mut Option<(Found, Dist2)>,
+    best: &mut Option<Best>,
 ) {
     let (vp, vq) = (p.vertices(), q.vertices());
     let r = &b.region;
@@ -1187,6 +1195,8 @@ fn solve_pass<K: Kernel>(
             stats.subproblem_vertices += pcv.len() + qcv.len();
             let s = &b.runs[b.kept[i]];
             let (a, c) = (r.ring[s.lo], r.ring[s.hi]);
+            // Candidates that cannot beat the best so far are skipped by the scans.
+            let cut = best.as_ref().map_or(f64::INFINITY, |b| b.cut);
             let mut fold = |fp: Feature, fq: Feature, found| {
                 // Subchain features to internal features.
                 let fp = match fp {
@@ -1208,16 +1218,21 @@ fn solve_pass<K: Kernel>(
                 let d = dist_of(vp, vq, fp, fq);
                 if best
                     .as_ref()
-                    .is_none_or(|(_, bd)| K::cmp_dist2(d, *bd) == Ordering::Less)
+                    .is_none_or(|b| K::cmp_dist2(d, b.d) == Ordering::Less)
                 {
-                    *best = Some((found, d));
+                    *best = Some(Best {
+                        found,
+                        d,
+                        cut: upper_bound::<K>(d),
+                    });
                 }
             };
             // Small subproblems are scanned: section 3's set-up costs more than the few pairs.
             let found = if pcv.len() * qcv.len() <= scan_below {
                 None
             } else {
-                split::<K>(&pcv, &qcv, a, c).and_then(|jobs| execute::<K>(&pcv, &qcv, a, c, &jobs))
+                split::<K>(&pcv, &qcv, a, c)
+                    .and_then(|jobs| execute::<K>(&pcv, &qcv, a, c, &jobs, cut))
             };
             match found {
                 Some(found) => {
@@ -1228,7 +1243,7 @@ fn solve_pass<K: Kernel>(
                 }
                 None => {
                     stats.subproblems_scanned += 1;
-                    let w = scan_part::<K>(&pcv, &qcv);
+                    let w = scan_part::<K>(&pcv, &qcv, cut);
                     let (fp, fq) = w.features();
                     fold(fp, fq, Err(w));
                 }
@@ -1252,12 +1267,14 @@ fn trimmed(r: &Region, qlo: usize, qhi: usize) -> Option<(usize, usize)> {
 }
 
 /// The exact scan of two parts: pruned by bounding boxes when large (the containing case's long
-/// subchains), with the same answer.
-fn scan_part<K: Kernel>(p: &[DVec2], q: &[DVec2]) -> Winner {
+/// subchains), with the same answer; candidates whose squared distance is bounded strictly above
+/// `cut` (the best answer so far's) are skipped, so the winner is the parts' nearest pair when that
+/// beats the best so far, and some pair of the parts otherwise.
+fn scan_part<K: Kernel>(p: &[DVec2], q: &[DVec2], cut: f64) -> Winner {
     if p.len() * q.len() > PRUNE_ABOVE {
-        scan_pruned_winner::<K>(p, q, true)
+        scan_pruned_winner_below::<K>(p, q, cut).0
     } else {
-        scan_winner::<K>(p, q, true)
+        scan_winner_below::<K>(p, q, cut).0
     }
 }
 
@@ -1273,6 +1290,7 @@ fn execute<K: Kernel>(
     a: DVec2,
     c: DVec2,
     jobs: &Jobs,
+    cut: f64,
 ) -> Option<Vec<Candidate>> {
     let shift = |f: Feature, by: usize| match f {
         Feature::Vertex(k) => Feature::Vertex(k + by),
@@ -1285,7 +1303,7 @@ fn execute<K: Kernel>(
         out.push((fp, fq, Ok(sep.pair)));
     }
     for &((p0, p1), (q0, q1)) in &jobs.scans {
-        let w = scan_part::<K>(&p[p0..=p1], &q[q0..=q1]);
+        let w = scan_part::<K>(&p[p0..=p1], &q[q0..=q1], cut);
         let (fp, fq) = w.features();
         out.push((shift(fp, p0), shift(fq, q0), Err(w)));
     }
@@ -2296,7 +2314,7 @@ mod tests {
         let Some(jobs) = split::<K>(&pc, &qc, anchor, anchor + dir) else {
             return Some(None);
         };
-        let found = execute::<K>(&pc, &qc, anchor, anchor + dir, &jobs)
+        let found = execute::<K>(&pc, &qc, anchor, anchor + dir, &jobs, f64::INFINITY)
             .expect("section 3 accepts every part split hands it");
         let best = found
             .iter()
