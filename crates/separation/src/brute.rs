@@ -582,6 +582,12 @@ fn scan_pruned_best<K: Kernel>(
     (best, best_b.1)
 }
 
+/// Whether the squared distance from `v` to the line through `a` and `c` is certainly greater than
+/// `cut` ([`bounds`]' lower bound of it is).
+pub(crate) fn farther_from_line_than(v: DVec2, a: DVec2, c: DVec2, cut: f64) -> bool {
+    bounds(Cand::QvPe(0, 0), &[a, c], &[v]).0 > cut
+}
+
 /// An upper bound of the squared distance `d` (a point pair, or a point and a closed segment),
 /// from [`bounds`]: the nearer end's, or the line's when the foot is strictly inside the segment
 /// (exact dot signs). `∞` when the bounds give up.
@@ -708,6 +714,49 @@ mod tests {
             }
         }
         assert!(finite > 35_000, "{finite}");
+    }
+
+    /// `farther_from_line_than` never claims a point farther from a line than it is (exact
+    /// rationals: the squared line distance `cross² / len`), and does claim it when it is clearly so.
+    #[test]
+    fn farther_from_line_is_exact_when_it_says_so() {
+        let mut rng = SplitMix64::new(0xdee9);
+        let (mut claimed, mut refused) = (0, 0);
+        for round in 0..24_000 {
+            let class = round % 5;
+            let (v, a, c) = (
+                point(&mut rng, class),
+                point(&mut rng, class),
+                point(&mut rng, class),
+            );
+            if a == c {
+                continue;
+            }
+            let r = |x: f64| to_rational(x).expect("finite");
+            let (ex, ey) = (r(c.x) - r(a.x), r(c.y) - r(a.y));
+            let (wx, wy) = (r(v.x) - r(a.x), r(v.y) - r(a.y));
+            let cross = ex.clone() * wy - ey.clone() * wx;
+            let exact = cross.clone() * cross / (ex.clone() * ex + ey.clone() * ey);
+            // Cuts: zero, tiny, huge, and fractions of the squared distance to `a` (rounded).
+            for cut in [0.0, 1e-300, 0.5, 1.0, 2.0, 1e300] {
+                let cut = if cut == 0.5 || cut == 1.0 || cut == 2.0 {
+                    let f: f64 = (v - a).length_squared() * cut;
+                    if !f.is_finite() {
+                        continue;
+                    }
+                    f
+                } else {
+                    cut
+                };
+                if farther_from_line_than(v, a, c, cut) {
+                    claimed += 1;
+                    assert!(exact > r(cut), "{v:?} {a:?} {c:?} {cut}");
+                } else {
+                    refused += 1;
+                }
+            }
+        }
+        assert!(claimed > 20_000 && refused > 20_000, "{claimed} {refused}");
     }
 
     /// With a cut from the distance `G` of some pair, the scans skip what cannot beat `G`: when the

@@ -29,7 +29,9 @@ use polydist_polygon::{Feature, SimplePolygon, convex_hull_of_two_with};
 
 #[cfg(test)]
 use crate::brute::separation_brute;
-use crate::brute::{Winner, scan_pruned_winner_below, scan_winner_below, upper_bound};
+use crate::brute::{
+    Winner, farther_from_line_than, scan_pruned_winner_below, scan_winner_below, upper_bound,
+};
 use crate::error::SeparationError;
 use crate::geodesic::{Hit, first_hit_within, merge_collinear, shortest_path};
 use crate::param::{Affine, Edge, Param};
@@ -1181,8 +1183,8 @@ fn solve_pass<K: Kernel>(
             Some(g) if qlo_all <= g && g < qhi_all => [(qlo_all, g), (g + 1, qhi_all)],
             _ => [(qlo_all, qhi_all), (1, 0)],
         };
-        pcv.clear();
-        pcv.extend((plo..=phi).map(|k| vp[(r.pb + k) % r.np]));
+        let s = &b.runs[b.kept[i]];
+        let (a, c) = (r.ring[s.lo], r.ring[s.hi]);
         for (qlo, qhi) in parts {
             if qlo > qhi {
                 continue;
@@ -1190,13 +1192,27 @@ fn solve_pass<K: Kernel>(
             let Some((qlo, qhi)) = trimmed(r, qlo, qhi) else {
                 continue;
             };
+            // Ends deeper than the best answer so far cannot hold a better pair (trimmed off the
+            // subproblems that are not scanned anyway: the scans skip such pairs on their own).
+            let cut = best.as_ref().map_or(f64::INFINITY, |b| b.cut);
+            let trim = if (phi + 1 - plo) * (qhi + 1 - qlo) > scan_below {
+                cut
+            } else {
+                f64::INFINITY
+            };
+            let at_p = |k: usize| vp[(r.pb + k) % r.np];
+            let Some((plo, phi)) = shallow::<K>(plo, phi, at_p, a, c, trim) else {
+                continue;
+            };
+            let Some((qlo, qhi)) = shallow::<K>(qlo, qhi, |k| r.ring[k], a, c, trim) else {
+                continue;
+            };
+            pcv.clear();
+            pcv.extend((plo..=phi).map(at_p));
             qcv.clear();
             qcv.extend((qlo..=qhi).map(|k| r.ring[k]));
             stats.subproblem_vertices += pcv.len() + qcv.len();
-            let s = &b.runs[b.kept[i]];
-            let (a, c) = (r.ring[s.lo], r.ring[s.hi]);
             // Candidates that cannot beat the best so far are skipped by the scans.
-            let cut = best.as_ref().map_or(f64::INFINITY, |b| b.cut);
             let mut fold = |fp: Feature, fq: Feature, found| {
                 // Subchain features to internal features.
                 let fp = match fp {
@@ -1250,6 +1266,40 @@ fn solve_pass<K: Kernel>(
             }
         }
     }
+}
+
+/// The subchain `lo..=hi` (positions; `at` gives the vertex) without its end edges that lie
+/// certainly farther than `√cut` from the line through `a` and `c`, both ends on one side: every
+/// point of such an edge is (depth is affine along it). A pair that Lemma 1 assigns to the
+/// subproblem meets `l_i` (notes 4.8), so it is at least as long as either point's distance to the
+/// line: no such pair has a point on a trimmed edge and beats a distance whose square is at most
+/// `cut`. `None` when every edge is trimmed and the last vertex is too deep as well. Exact signs
+/// and the scans' filter bounds; `O(trimmed + 1)`.
+fn shallow<K: Kernel>(
+    lo: usize,
+    hi: usize,
+    at: impl Fn(usize) -> DVec2,
+    a: DVec2,
+    c: DVec2,
+    cut: f64,
+) -> Option<(usize, usize)> {
+    if !cut.is_finite() {
+        return Some((lo, hi));
+    }
+    let deep = |k: usize| {
+        let v = at(k);
+        farther_from_line_than(v, a, c, cut).then(|| K::orient(a, c, v))
+    };
+    // An edge is deep when both ends are, on one side of the line.
+    let deep_edge = |k: usize| deep(k).is_some_and(|s| deep(k + 1) == Some(s));
+    let (mut lo, mut hi) = (lo, hi);
+    while lo < hi && deep_edge(lo) {
+        lo += 1;
+    }
+    while hi > lo && deep_edge(hi - 1) {
+        hi -= 1;
+    }
+    (lo < hi || deep(lo).is_none()).then_some((lo, hi))
 }
 
 /// The `Q` subchain `qlo..=qhi` (ring positions) trimmed to the edges with an end in the pass's
