@@ -326,9 +326,32 @@ impl SimplePolygon {
     /// Processing Letters 25 (1987), 11–12.
     #[must_use]
     pub fn convex_hull_with<K: Kernel>(&self) -> ConvexPolygon {
+        self.convex_hull_and_indices_with::<K>().0
+    }
+
+    /// [`convex_hull_with`](Self::convex_hull_with), with the internal index of each hull vertex
+    /// (the hull's vertex `i` is this polygon's vertex `indices[i]`), for callers that walk the
+    /// polygon between hull vertices. Same complexity.
+    ///
+    /// ```
+    /// use glam::DVec2;
+    /// use polydist_polygon::predicates::Exact;
+    /// use polydist_polygon::SimplePolygon;
+    ///
+    /// // A square with a notch: vertex 2 is reflex, so not on the hull.
+    /// let v = [DVec2::ZERO, DVec2::new(2.0, 0.0), DVec2::new(1.0, 1.0), DVec2::new(2.0, 2.0), DVec2::new(0.0, 2.0)];
+    /// let p = SimplePolygon::try_new(&v)?;
+    /// let (hull, indices) = p.convex_hull_and_indices_with::<Exact>();
+    /// assert_eq!(indices, [0, 1, 3, 4]);
+    /// assert!(indices.iter().zip(hull.vertices()).all(|(&i, h)| p.vertices()[i] == *h));
+    /// # Ok::<(), polydist_polygon::PolygonError>(())
+    /// ```
+    #[must_use]
+    pub fn convex_hull_and_indices_with<K: Kernel>(&self) -> (ConvexPolygon, Vec<usize>) {
         let kept = melkman::hull::<K>(&self.vertices);
         let vertices = kept.iter().map(|&i| self.vertices[i]).collect();
-        ConvexPolygon::from_hull(vertices, self.map.hull_of_ring(&kept))
+        let hull = ConvexPolygon::from_hull(vertices, self.map.hull_of_ring(&kept));
+        (hull, kept)
     }
 
     /// The caller's index of internal vertex `v`: the position, in the slice given to the constructor,

@@ -214,9 +214,9 @@ pub fn separation<K: Kernel>(
     // Disjoint hulls contain disjoint polygons: the sweep is needed only when the hulls meet.
     match hull_route::<K>(p, q)? {
         Ok(answer) => Ok(answer),
-        Err(()) => match intersection::<K>(p, q) {
+        Err((hp, hq)) => match intersection::<K>(p, q) {
             Some(meet) => Ok(PolygonSeparation::Intersecting(meet)),
-            None => separator_route::<K>(p, q),
+            None => separator_route::<K>(p, q, &hp, &hq),
         },
     }
 }
@@ -265,19 +265,25 @@ pub fn separation_of_disjoint<K: Kernel>(
 ) -> Result<PolygonSeparation, SeparationError> {
     match hull_route::<K>(p, q)? {
         Ok(answer) => Ok(answer),
-        Err(()) => separator_route::<K>(p, q),
+        Err((hp, hq)) => separator_route::<K>(p, q, &hp, &hq),
     }
 }
 
-/// The disjoint-hull route; `Err(())` when the hulls meet.
+/// The hulls' vertices as internal indices of `P` and of `Q`.
+type HullIndices = (Vec<usize>, Vec<usize>);
+
+/// The disjoint-hull route; when the hulls meet, `Err` with their vertices' internal indices.
 fn hull_route<K: Kernel>(
     p: &SimplePolygon,
     q: &SimplePolygon,
-) -> Result<Result<PolygonSeparation, ()>, SeparationError> {
-    let (hp, hq) = (p.convex_hull_with::<K>(), q.convex_hull_with::<K>());
+) -> Result<Result<PolygonSeparation, HullIndices>, SeparationError> {
+    let ((hp, ip), (hq, iq)) = (
+        p.convex_hull_and_indices_with::<K>(),
+        q.convex_hull_and_indices_with::<K>(),
+    );
     let (sep, hint) = distance_with_hint::<K>(&hp, &hq, None);
     let Separation::Disjoint(closest) = sep else {
-        return Ok(Err(()));
+        return Ok(Err((ip, iq)));
     };
     let (fp, fq) = hint.internal_pair().ok_or(SeparationError::Inconsistent)?;
     let lid = |h: &ConvexPolygon, f: Feature| matches!(f, Feature::Edge(e) if h.is_lid(e));
@@ -317,8 +323,10 @@ pub(crate) fn hull_pair(closest: &Closest) -> ClosestPair {
 fn separator_route<K: Kernel>(
     p: &SimplePolygon,
     q: &SimplePolygon,
+    hp: &[usize],
+    hq: &[usize],
 ) -> Result<PolygonSeparation, SeparationError> {
-    let Some(built) = separator::build::<K>(p, q)? else {
+    let Some(built) = separator::build_with_hulls::<K>(p, q, hp, hq)? else {
         return Err(SeparationError::HullsIntersect);
     };
     let (pair, stats) = separator::solve::<K>(p, q, &built)?;

@@ -184,24 +184,8 @@ fn clockwise(n: usize, from: usize, to: usize) -> Vec<usize> {
 
 /// The internal indices of `p`'s hull vertices, counter-clockwise (Melkman's hull keeps the
 /// polygon's order; a walk along the ring names each hull vertex). `O(n)`.
-fn hull_indices<K: Kernel>(p: &SimplePolygon) -> Option<Vec<usize>> {
-    let h = p.convex_hull_with::<K>();
-    let v = p.vertices();
-    let first = h.vertices().first()?;
-    let mut i = v.iter().position(|x| x == first)?;
-    let mut out = Vec::with_capacity(h.len());
-    for x in h.vertices() {
-        let mut steps = 0;
-        while v[i] != *x {
-            i = (i + 1) % v.len();
-            steps += 1;
-            if steps > v.len() {
-                return None;
-            }
-        }
-        out.push(i);
-    }
-    Some(out)
+fn hull_indices<K: Kernel>(p: &SimplePolygon) -> Vec<usize> {
+    p.convex_hull_and_indices_with::<K>().1
 }
 
 /// Step 1 and 2: the bridges of `CH(P ∪ Q)`, the facing chains and the ring of `R` (with its cut
@@ -213,11 +197,9 @@ fn hull_indices<K: Kernel>(p: &SimplePolygon) -> Option<Vec<usize>> {
 fn facing<K: Kernel>(
     p: &SimplePolygon,
     q: &SimplePolygon,
+    hp: &[usize],
+    hq: &[usize],
 ) -> Result<Result<Region, Unsupported>, SeparationError> {
-    let (hp, hq) = (
-        hull_indices::<K>(p).ok_or(SeparationError::Inconsistent)?,
-        hull_indices::<K>(q).ok_or(SeparationError::Inconsistent)?,
-    );
     let (vp, vq) = (p.vertices(), q.vertices());
     let mut pts: Vec<DVec2> = hp.iter().map(|&i| vp[i]).collect();
     pts.extend(hq.iter().map(|&j| vq[j]));
@@ -273,12 +255,12 @@ fn facing<K: Kernel>(
         x
     };
     let (px, qy) = (
-        shrink(&hp, vp, px, vq[hq[qy]]),
-        shrink(&hq, vq, qy, vp[hp[px]]),
+        shrink(hp, vp, px, vq[hq[qy]]),
+        shrink(hq, vq, qy, vp[hp[px]]),
     );
     let (pw, qz) = (
-        shrink(&hp, vp, pw, vq[hq[qz]]),
-        shrink(&hq, vq, qz, vp[hp[pw]]),
+        shrink(hp, vp, pw, vq[hq[qz]]),
+        shrink(hq, vq, qz, vp[hp[pw]]),
     );
     let (pb, qb, qt, pt) = (hp[px], hq[qy], hq[qz], hp[pw]);
     if qb == qt {
@@ -308,18 +290,20 @@ fn facing<K: Kernel>(
 pub(crate) fn regions<K: Kernel>(
     p: &SimplePolygon,
     q: &SimplePolygon,
+    hp: &[usize],
+    hq: &[usize],
 ) -> Result<Option<(Vec<Region>, bool)>, SeparationError> {
-    match facing::<K>(p, q)? {
+    match facing::<K>(p, q, hp, hq)? {
         Ok(r) => Ok(Some((vec![r], false))),
-        Err(Unsupported::Pinched) => match facing::<K>(q, p)? {
+        Err(Unsupported::Pinched) => match facing::<K>(q, p, hq, hp)? {
             Ok(r) => Ok(Some((vec![r], true))),
             Err(_) => Err(SeparationError::Inconsistent),
         },
         Err(Unsupported::Containing { p_inside: true }) => {
-            Ok(pocket_regions::<K>(p, q)?.map(|r| (r, false)))
+            Ok(pocket_regions::<K>(p, q, hq)?.map(|r| (r, false)))
         }
         Err(Unsupported::Containing { p_inside: false }) => {
-            Ok(pocket_regions::<K>(q, p)?.map(|r| (r, true)))
+            Ok(pocket_regions::<K>(q, p, hp)?.map(|r| (r, true)))
         }
     }
 }
@@ -512,8 +496,8 @@ fn pinch_cut<K: Kernel>(r: &Region) -> Option<(usize, usize)> {
 fn pocket_regions<K: Kernel>(
     p: &SimplePolygon,
     q: &SimplePolygon,
+    hq: &[usize],
 ) -> Result<Option<Vec<Region>>, SeparationError> {
-    let hq = hull_indices::<K>(q).ok_or(SeparationError::Inconsistent)?;
     let (vp, vq) = (p.vertices(), q.vertices());
     let (np, nq) = (vp.len(), vq.len());
     let top = extreme(vp.iter().copied().enumerate(), 0).ok_or(SeparationError::Inconsistent)?;
@@ -891,11 +875,26 @@ pub(crate) struct Plan {
 }
 
 /// Steps 1–6 for every region. `None` when one polygon lies inside the other (they meet).
+#[cfg_attr(
+    not(test),
+    expect(dead_code, reason = "the query passes the hulls it has built")
+)]
 pub(crate) fn build<K: Kernel>(
     p: &SimplePolygon,
     q: &SimplePolygon,
 ) -> Result<Option<Plan>, SeparationError> {
-    let Some((rs, swapped)) = regions::<K>(p, q)? else {
+    build_with_hulls::<K>(p, q, &hull_indices::<K>(p), &hull_indices::<K>(q))
+}
+
+/// [`build`], given each polygon's Melkman hull as internal vertex indices
+/// ([`SimplePolygon::convex_hull_and_indices_with`]).
+pub(crate) fn build_with_hulls<K: Kernel>(
+    p: &SimplePolygon,
+    q: &SimplePolygon,
+    hp: &[usize],
+    hq: &[usize],
+) -> Result<Option<Plan>, SeparationError> {
+    let Some((rs, swapped)) = regions::<K>(p, q, hp, hq)? else {
         return Ok(None);
     };
     let passes = rs
@@ -2055,7 +2054,12 @@ mod tests {
         if crate::polygon::intersection::<Robust>(&p, &q).is_some() {
             return None;
         }
-        match facing::<Robust>(&p, &q) {
+        match facing::<Robust>(
+            &p,
+            &q,
+            &hull_indices::<Robust>(&p),
+            &hull_indices::<Robust>(&q),
+        ) {
             Ok(Ok(_)) => Some((p, q)),
             _ => None,
         }
@@ -2111,7 +2115,9 @@ mod tests {
             pairs.push((poly(&pair.a), poly(&pair.b)));
         }
         for (p, q) in &pairs {
-            let Ok(Some((rs, _))) = regions::<Robust>(p, q) else {
+            let Ok(Some((rs, _))) =
+                regions::<Robust>(p, q, &hull_indices::<Robust>(p), &hull_indices::<Robust>(q))
+            else {
                 continue;
             };
             for region in rs {
@@ -2206,7 +2212,12 @@ mod tests {
         let p = ring(&[[3.0, 2.0], [0.0, -4.0], [4.0, 2.0]]);
         let q = ring(&[[0.0, 8.0], [2.0, 3.0], [8.0, 4.0]]);
         assert!(matches!(
-            facing::<Robust>(&q, &p),
+            facing::<Robust>(
+                &q,
+                &p,
+                &hull_indices::<Robust>(&q),
+                &hull_indices::<Robust>(&p)
+            ),
             Ok(Err(Unsupported::Pinched))
         ));
         for (a, b) in [(&p, &q), (&q, &p)] {
@@ -2239,7 +2250,12 @@ mod tests {
             let (Ok(p), Ok(q)) = (SimplePolygon::try_new(&a), SimplePolygon::try_new(&b)) else {
                 continue;
             };
-            match facing::<Robust>(&p, &q) {
+            match facing::<Robust>(
+                &p,
+                &q,
+                &hull_indices::<Robust>(&p),
+                &hull_indices::<Robust>(&q),
+            ) {
                 Ok(Ok(_)) => {}
                 Ok(Err(Unsupported::Pinched)) => continue,
                 other => panic!("seed {seed}: {other:?}"),
@@ -2321,7 +2337,12 @@ mod tests {
             if crate::polygon::intersection::<Robust>(&p, &q).is_some() {
                 continue;
             }
-            if let Ok(Ok(r)) = facing::<Robust>(&p, &q) {
+            if let Ok(Ok(r)) = facing::<Robust>(
+                &p,
+                &q,
+                &hull_indices::<Robust>(&p),
+                &hull_indices::<Robust>(&q),
+            ) {
                 // Skip hull-disjoint placements: they are tested apart.
                 let disjoint_hulls = matches!(
                     polydist_convex::distance_with::<Robust>(&p.convex_hull(), &q.convex_hull()),
