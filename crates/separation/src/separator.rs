@@ -627,7 +627,12 @@ fn pocket_regions<K: Kernel>(
 /// geodesic is; and the cut lies beyond `u`'s level, which the geodesic never passes): it is the
 /// shortest path from `p_b` to `u` in the second half followed by the one from `u` to `p_t` in the
 /// first. `O(N log N)` as [`triangulate`], `O(N)` for the paths.
-fn halves<K: Kernel>(r: &Region, u: usize, w: usize) -> Option<(Triangulation, Vec<usize>)> {
+fn halves<K: Kernel>(
+    r: &Region,
+    u: usize,
+    w: usize,
+    cache: &mut Halves,
+) -> Option<(Triangulation, Vec<usize>)> {
     let (ring, n, t) = (&r.ring, r.ring.len(), r.pt());
     if !(1..=r.qt).contains(&w) || !(t + 1..n).contains(&u) {
         return None;
@@ -636,7 +641,7 @@ fn halves<K: Kernel>(r: &Region, u: usize, w: usize) -> Option<(Triangulation, V
     let h2: Vec<usize> = (u..n).chain(0..=w).collect();
     let pts = |h: &[usize]| h.iter().map(|&i| ring[i]).collect::<Vec<DVec2>>();
     let (r1, r2) = (pts(&h1), pts(&h2));
-    let (t1, t2) = (triangulate::<K>(&r1).ok()?, triangulate::<K>(&r2).ok()?);
+    let (t1, t2) = (cache.triangulate::<K>(&r1)?, cache.triangulate::<K>(&r2)?);
     let mut triangles = Vec::with_capacity(n - 2);
     for (h, tr) in [(&h1, &t1), (&h2, &t2)] {
         triangles.extend(
@@ -654,6 +659,40 @@ fn halves<K: Kernel>(r: &Region, u: usize, w: usize) -> Option<(Triangulation, V
         .chain(second.iter().skip(1).map(|&i| h1[i]))
         .collect();
     Some((tri, merge_collinear::<K>(ring, &path)))
+}
+
+/// Halves of weakly simple rings already triangulated, kept for the other pass of the containing
+/// case: its ring is cut into the same two polygons, their vertex lists rotated (the annulus cut
+/// along both `c_T` and `c_B`). A half is looked up by its vertex sequence (equal up to rotation,
+/// checked point for point) and its triangles relabelled; otherwise it is triangulated and kept.
+#[derive(Default)]
+pub(crate) struct Halves {
+    kept: Vec<(Vec<DVec2>, Vec<[u32; 3]>)>,
+}
+
+impl Halves {
+    /// A triangulation of the simple polygon `pts`. `O(n)` when a rotation of it is kept (the
+    /// lookup and the adjacency), else [`triangulate`]'s `O(n log n)`.
+    fn triangulate<K: Kernel>(&mut self, pts: &[DVec2]) -> Option<Triangulation> {
+        let m = pts.len();
+        for (c, tris) in &self.kept {
+            let Some(off) = (c.len() == m)
+                .then(|| c.iter().position(|&x| x == pts[0]))
+                .flatten()
+            else {
+                continue;
+            };
+            if (0..m).all(|i| c[(i + off) % m] == pts[i]) {
+                // Kept vertex `j` is vertex `j − off` (mod m) of `pts`.
+                let relabel = |j: u32| ((j as usize + m - off) % m) as u32;
+                let tris = tris.iter().map(|t| t.map(relabel)).collect();
+                return Triangulation::glue(m, tris).ok();
+            }
+        }
+        let t = triangulate::<K>(pts).ok()?;
+        self.kept.push((pts.to_vec(), t.triangles().to_vec()));
+        Some(t)
+    }
 }
 
 /// An end of an extended run: the run's own vertex (no arm), or the first boundary point its arm
@@ -897,9 +936,11 @@ pub(crate) fn build_with_hulls<K: Kernel>(
     let Some((rs, swapped)) = regions::<K>(p, q, hp, hq)? else {
         return Ok(None);
     };
+    // The containing case's two regions are cut into the same two halves: triangulated once.
+    let mut halves = Halves::default();
     let passes = rs
         .into_iter()
-        .map(build_region::<K>)
+        .map(|r| build_region::<K>(r, &mut halves))
         .collect::<Result<Vec<_>, _>>()?;
     Ok(Some(Plan { passes, swapped }))
 }
@@ -954,14 +995,17 @@ fn runs_with_arms<K: Kernel>(
 }
 
 /// Step 3: the region's triangulation and the geodesic from `p_b` (ring vertex 0) to `p_t`.
-fn geodesic_of<K: Kernel>(region: &Region) -> Result<(Triangulation, Vec<usize>), SeparationError> {
+fn geodesic_of<K: Kernel>(
+    region: &Region,
+    cache: &mut Halves,
+) -> Result<(Triangulation, Vec<usize>), SeparationError> {
     let (tri, path) = match region.cut {
         None => {
             let tri = triangulate::<K>(&region.ring).map_err(|_| SeparationError::Inconsistent)?;
             let path = shortest_path::<K>(&tri, &region.ring, 0, region.pt());
             (tri, path)
         }
-        Some((u, w)) => halves::<K>(region, u, w).ok_or(SeparationError::Inconsistent)?,
+        Some((u, w)) => halves::<K>(region, u, w, cache).ok_or(SeparationError::Inconsistent)?,
     };
     if path.len() < 2 || path[0] != 0 || path[path.len() - 1] != region.pt() {
         return Err(SeparationError::Inconsistent);
@@ -970,8 +1014,11 @@ fn geodesic_of<K: Kernel>(region: &Region) -> Result<(Triangulation, Vec<usize>)
 }
 
 /// Steps 3–6 in one region: the separator and the subchains.
-pub(crate) fn build_region<K: Kernel>(region: Region) -> Result<Built, SeparationError> {
-    let (tri, path) = geodesic_of::<K>(&region)?;
+pub(crate) fn build_region<K: Kernel>(
+    region: Region,
+    cache: &mut Halves,
+) -> Result<Built, SeparationError> {
+    let (tri, path) = geodesic_of::<K>(&region, cache)?;
     let k = path.len() - 1;
     let runs = runs_with_arms::<K>(&tri, &region.ring, &path, 8 * region.ring.len() + 64);
     // Step 5: greedy pruning; the scan from the last kept stops at the first run that misses it.
@@ -2121,7 +2168,7 @@ mod tests {
                 continue;
             };
             for region in rs {
-                let Ok((tri, path)) = geodesic_of::<Robust>(&region) else {
+                let Ok((tri, path)) = geodesic_of::<Robust>(&region, &mut Halves::default()) else {
                     continue;
                 };
                 let walked = runs_with_arms::<Robust>(&tri, &region.ring, &path, usize::MAX);
@@ -2673,6 +2720,35 @@ mod tests {
                 check_pair_v::<Robust>(a, b, true).unwrap_or_else(|e| panic!("{tip}: {e}"));
                 check_pair_v::<Exact>(a, b, true).unwrap_or_else(|e| panic!("{tip}: {e}"));
             }
+        }
+    }
+
+    /// A kept half is found again under every rotation of its vertex list, and its relabelled
+    /// triangles triangulate the rotated polygon; a different polygon is triangulated anew.
+    #[test]
+    fn kept_halves_serve_their_rotations() {
+        let mut rng = SplitMix64::new(0x4a1f);
+        for round in 0..300 {
+            let n = 3 + rng.index(60);
+            let spikes = rng.index(n + 1);
+            let v = if round % 2 == 0 {
+                polydist_oracle::star(&mut rng, n, spikes)
+            } else {
+                polydist_oracle::two_opt(&mut rng, n)
+            };
+            let mut cache = Halves::default();
+            let t = cache.triangulate::<Robust>(&v).expect("simple");
+            t.check::<Robust>(&v).expect("a triangulation");
+            let off = rng.index(v.len());
+            let rotated: Vec<DVec2> = (0..v.len()).map(|i| v[(i + off) % v.len()]).collect();
+            let t = cache.triangulate::<Robust>(&rotated).expect("kept");
+            assert_eq!(cache.kept.len(), 1, "a rotation is found again");
+            t.check::<Robust>(&rotated)
+                .unwrap_or_else(|e| panic!("round {round}, offset {off}: {e}"));
+            // Reversed (another polygon: clockwise) or moved: not found.
+            let moved: Vec<DVec2> = v.iter().map(|&x| x + DVec2::X).collect();
+            cache.triangulate::<Robust>(&moved).expect("simple");
+            assert_eq!(cache.kept.len(), 2);
         }
     }
 
