@@ -1336,16 +1336,27 @@ fn shallow<K: Kernel>(
         let v = at(k);
         farther_from_line_than(v, a, c, cut).then(|| K::orient(a, c, v))
     };
-    // An edge is deep when both ends are, on one side of the line.
-    let deep_edge = |k: usize| deep(k).is_some_and(|s| deep(k + 1) == Some(s));
+    // An edge is deep when both ends are, on one side of the line; each end is decided once.
     let (mut lo, mut hi) = (lo, hi);
-    while lo < hi && deep_edge(lo) {
+    let mut at_lo = deep(lo);
+    while lo < hi && at_lo.is_some() {
+        let next = deep(lo + 1);
+        if next != at_lo {
+            break;
+        }
         lo += 1;
+        at_lo = next;
     }
-    while hi > lo && deep_edge(hi - 1) {
+    let mut at_hi = if hi == lo { at_lo } else { deep(hi) };
+    while hi > lo && at_hi.is_some() {
+        let prev = if hi - 1 == lo { at_lo } else { deep(hi - 1) };
+        if prev != at_hi {
+            break;
+        }
         hi -= 1;
+        at_hi = prev;
     }
-    (lo < hi || deep(lo).is_none()).then_some((lo, hi))
+    (lo < hi || at_lo.is_none()).then_some((lo, hi))
 }
 
 /// The `Q` subchain `qlo..=qhi` (ring positions) trimmed to the edges with an end in the pass's
