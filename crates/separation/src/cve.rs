@@ -2,7 +2,7 @@
 //! edges of one chain cut into pieces with constant `h()`, `l()` and `α ≥ 90°`, the regions `R()` of
 //! pieces and of the other chain's vertices, and the tagged matrix `M` searched with SMAWK.
 
-use core::cell::Cell;
+use core::cell::{Cell, OnceCell};
 use core::cmp::Ordering;
 use core::marker::PhantomData;
 
@@ -505,31 +505,42 @@ impl<K: Kernel> Matrix for CveMatrix<K> {
         let q = self.cols[j].pt;
         let (pb, cb) = (&self.piece_bands[i], &self.col_bands[j]);
         let (bot, top) = (self.bot(pc), self.top(pc));
-        // One form, `H(x) − H(q)`, at both ends of the piece: its end signs are shared.
-        let (bot_vs_q, top_vs_q) =
-            self.edge(pc.edge)
-                .eval_pair_within::<K>(&self.fp.height_minus(q), &pc.bot, &pc.top);
-        let (bot_vs_q, top_vs_q) = (bot_vs_q.to_ordering(), top_vs_q.to_ordering());
+        // `H(x) − H(q)` at the piece's ends is needed only where a band has no point (at a root
+        // end it costs a degree-4 sign): both ends are decided together, on first use, sharing the
+        // form's signs at the edge's ends.
+        let ends_vs_q = OnceCell::new();
+        let vs_q = || {
+            *ends_vs_q.get_or_init(|| {
+                let (b, t) = self.edge(pc.edge).eval_pair_within::<K>(
+                    &self.fp.height_minus(q),
+                    &pc.bot,
+                    &pc.top,
+                );
+                (b.to_ordering(), t.to_ordering())
+            })
+        };
         let q_below = match pb.down {
             Some(u) => self.fq.cmp_height::<K>(q, u) == Ordering::Less,
-            None => bot_vs_q == Ordering::Greater,
+            None => vs_q().0 == Ordering::Greater,
         };
-        let piece_above = match cb.up {
-            Some(c) => self.cmp_points(&bot, &c) == Ordering::Greater,
-            None => bot_vs_q == Ordering::Greater,
-        };
-        if q_below || piece_above {
+        let piece_above = q_below
+            || match cb.up {
+                Some(c) => self.cmp_points(&bot, &c) == Ordering::Greater,
+                None => vs_q().0 == Ordering::Greater,
+            };
+        if piece_above {
             return EdgeEntry::Penalty(self.cols.len() - j);
         }
         let q_above = match pb.up {
             Some(u) => self.fq.cmp_height::<K>(q, u) == Ordering::Greater,
-            None => top_vs_q == Ordering::Less,
+            None => vs_q().1 == Ordering::Less,
         };
-        let piece_below = match cb.down {
-            Some(c) => self.cmp_points(&top, &c) == Ordering::Less,
-            None => top_vs_q == Ordering::Less,
-        };
-        if q_above || piece_below {
+        let piece_below = q_above
+            || match cb.down {
+                Some(c) => self.cmp_points(&top, &c) == Ordering::Less,
+                None => vs_q().1 == Ordering::Less,
+            };
+        if piece_below {
             EdgeEntry::Infinity
         } else {
             let r = &self.edges[pc.edge];
