@@ -325,25 +325,27 @@ impl<K: Kernel> CveMatrix<K> {
         let (fp, fq) = (self.fp, self.fq);
         let e = self.edge(pc.edge);
         let (mut lb, mut ub) = (pc.bot, pc.top);
-        // Every condition as g ≥ 0.
+        // Every condition as g ≥ 0. `W(q)`'s two first: they are the ones that reject (on
+        // saw-teeth every rejection of a column's pointer scan is theirs), and a rejection stops at
+        // the first condition negative at both ends.
         let hq = fp.height_minus(q.pt);
         let mut conds: [Option<Affine>; 6] = [None; 6];
-        conds[0] = Some(if up { hq } else { hq.negated() });
-        conds[1] = match cap {
+        conds[0] = Some(match q.hi {
+            Some(h) => fq.orient_x_last(q.pt, h),
+            None => fq.depth_minus(q.pt).negated(),
+        });
+        conds[1] = Some(match q.lo {
+            Some(l) => fq.orient_x_last(q.pt, l).negated(),
+            None => fq.depth_minus(q.pt).negated(),
+        });
+        conds[2] = Some(if up { hq } else { hq.negated() });
+        conds[3] = match cap {
             Cap::Height(t) => {
                 let g = fp.height_minus(t);
                 Some(if up { g.negated() } else { g })
             }
             _ => None,
         };
-        conds[2] = Some(match q.hi {
-            Some(h) => fq.orient_x_last(q.pt, h),
-            None => fq.depth_minus(q.pt).negated(),
-        });
-        conds[3] = Some(match q.lo {
-            Some(l) => fq.orient_x_last(q.pt, l).negated(),
-            None => fq.depth_minus(q.pt).negated(),
-        });
         conds[4] = Some(match pc.hi {
             Some(h) => fp.orient_x_first(h, q.pt),
             None => fp.depth_minus(q.pt),
