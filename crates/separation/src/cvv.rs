@@ -14,7 +14,7 @@ use crate::chain::{Frames, Prepared, check_monotone, validate, validate_touching
 use crate::construct::vertex_vertex;
 use crate::envelope::prepare;
 use crate::error::{Chain, SeparationError};
-use crate::region::{Place, Region, place, regions};
+use crate::region::{Place, Region, band, regions};
 use crate::result::{Cvv, CvvStats};
 use crate::wedge::{Apex, apexes};
 
@@ -185,9 +185,10 @@ impl<K: Kernel> Matrix for CvvMatrix<K> {
     fn entry(&self, i: usize, j: usize) -> MatrixEntry {
         self.lookups.set(self.lookups.get() + 1);
         let (p, q) = (self.rows[i].pt, self.columns[j].pt);
-        // q_j relative to R(p_i) (its u^± are vertices of Q), p_i relative to R(q_j).
-        let q_in_rp = place::<K>(self.frames.q, p, &self.row_regions[i], q);
-        let p_in_rq = place::<K>(self.frames.p, q, &self.column_regions[j], p);
+        // q_j relative to R(p_i) (its u^± are vertices of Q), p_i relative to R(q_j); by height
+        // bands, which are the regions for apexes (`region::band`).
+        let q_in_rp = band::<K>(self.frames.q, p, &self.row_regions[i], q);
+        let p_in_rq = band::<K>(self.frames.p, q, &self.column_regions[j], p);
         if q_in_rp == Place::Below || p_in_rq == Place::Above {
             MatrixEntry::Penalty(self.columns.len() - j)
         } else if q_in_rp == Place::Inside && p_in_rq == Place::Inside {

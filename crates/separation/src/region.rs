@@ -5,10 +5,10 @@
 use core::cmp::Ordering;
 
 use glam::DVec2;
-use polydist_predicates::{Kernel, Sign};
+use polydist_predicates::Kernel;
 
 use crate::frame::Frame;
-use crate::wedge::{Apex, cmp_depth, in_wedge};
+use crate::wedge::{Apex, in_wedge};
 
 /// `R(b)` for a vertex `b` of one chain: the vertices `u^+`, `u^-` of the other chain (`None`: the
 /// boundary is the perpendicular to the line through `b` itself, the text's `u = b^l`).
@@ -82,40 +82,63 @@ pub(crate) fn regions<K: Kernel>(bs: &[Apex], fb: Frame, us: &[Apex], fu: Frame)
     out
 }
 
-/// Classifies `z`, a point on the side of the chain holding `u^±` (frame `fu`), against `R(b)`.
+/// Classifies `z`, a vertex of the chain holding `u^±` (frame `fu`) that is one of the apexes the
+/// regions were built from, against `R(b)`, by heights alone: above when `H(z) > H(u^+)`, below
+/// when `H(z) < H(u^-)` (`H(b)` for a missing `u`), inside otherwise. One degree-2 test per
+/// boundary, where the literal boundary (`place`, its test twin in the tests) takes up to three.
 ///
-/// The upper boundary is the segment `(b, u^+)` and then the ray from `u^+` perpendicular to the
-/// line, away from it; `z` is above it when `z` is at least as deep as `u^+` and strictly higher, or
-/// nearer to the line than `u^+` and strictly left of `b → u^+` (in the frame of `z`'s side). The
-/// region is closed. At most three degree-2 tests per boundary.
-pub(crate) fn place<K: Kernel>(fu: Frame, b: DVec2, r: &Region, z: DVec2) -> Place {
-    let beyond = |u: DVec2, side: Ordering, orient_side: Sign| match cmp_depth::<K>(fu, z, u) {
-        Ordering::Less => fu.orient::<K>(b, u, z) == orient_side,
-        _ => fu.cmp_height::<K>(z, u) == side,
-    };
-    let above = match r.up {
-        Some(u) => beyond(u, Ordering::Greater, Sign::Positive),
-        None => fu.cmp_height::<K>(z, b) == Ordering::Greater,
-    };
-    if above {
-        return Place::Above;
+/// Why the band is the region, for such `z` (docs/algorithms/separation.md, "`R()` of vertices"):
+/// when `u^+` is admissible for `b`, no point of `u`'s chain lower than `u^+` lies above the segment
+/// `(b, u^+)` (it would be nearer to the line than `u^+` and above the direction of `b` from it, so
+/// `l(u^+)` would put `b` below `W(u^+)`), and every point higher than `u^+` lies above the boundary
+/// (at least as deep: by the ray; nearer: strictly left of `b → u^+`, a sign read off the
+/// coordinates). The apexes have strictly increasing heights, so no `z` other than `u^+` is at its
+/// height. The same holds for `u^-` below. `band_is_the_literal_region` checks it.
+pub(crate) fn band<K: Kernel>(fu: Frame, b: DVec2, r: &Region, z: DVec2) -> Place {
+    if fu.cmp_height::<K>(z, r.up.unwrap_or(b)) == Ordering::Greater {
+        Place::Above
+    } else if fu.cmp_height::<K>(z, r.down.unwrap_or(b)) == Ordering::Less {
+        Place::Below
+    } else {
+        Place::Inside
     }
-    let below = match r.down {
-        Some(u) => beyond(u, Ordering::Less, Sign::Negative),
-        None => fu.cmp_height::<K>(z, b) == Ordering::Less,
-    };
-    if below { Place::Below } else { Place::Inside }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::chain::validate;
+    use crate::chain::{validate, validate_touching};
     use crate::envelope::prepare;
     use crate::error::Chain;
     use crate::wedge::apexes;
+    use crate::wedge::cmp_depth;
     use polydist_oracle::SplitMix64;
-    use polydist_predicates::Exact;
+    use polydist_predicates::{Exact, Sign};
+
+    /// Classifies `z`, a point on the side of the chain holding `u^±` (frame `fu`), against `R(b)`.
+    ///
+    /// The upper boundary is the segment `(b, u^+)` and then the ray from `u^+` perpendicular to the
+    /// line, away from it; `z` is above it when `z` is at least as deep as `u^+` and strictly higher, or
+    /// nearer to the line than `u^+` and strictly left of `b → u^+` (in the frame of `z`'s side). The
+    /// region is closed. At most three degree-2 tests per boundary. The test twin of [`band`].
+    fn place<K: Kernel>(fu: Frame, b: DVec2, r: &Region, z: DVec2) -> Place {
+        let beyond = |u: DVec2, side: Ordering, orient_side: Sign| match cmp_depth::<K>(fu, z, u) {
+            Ordering::Less => fu.orient::<K>(b, u, z) == orient_side,
+            _ => fu.cmp_height::<K>(z, u) == side,
+        };
+        let above = match r.up {
+            Some(u) => beyond(u, Ordering::Greater, Sign::Positive),
+            None => fu.cmp_height::<K>(z, b) == Ordering::Greater,
+        };
+        if above {
+            return Place::Above;
+        }
+        let below = match r.down {
+            Some(u) => beyond(u, Ordering::Less, Sign::Negative),
+            None => fu.cmp_height::<K>(z, b) == Ordering::Less,
+        };
+        if below { Place::Below } else { Place::Inside }
+    }
 
     fn side(rng: &mut SplitMix64, n: usize, sign: f64) -> Vec<DVec2> {
         let mut ys: Vec<i64> = (0..n).map(|_| rng.range_i64(0, 3 * n as i64)).collect();
@@ -185,5 +208,54 @@ mod tests {
             }
         }
         assert!(found > 1000, "the generator must produce regions ({found})");
+    }
+
+    /// [`band`] (heights only) against the literal boundary [`place`] for every apex of the other
+    /// chain and every region, on chains off the line and chains touching it.
+    #[test]
+    fn band_is_the_literal_region() {
+        let mut rng = SplitMix64::new(22);
+        let (a, b) = (DVec2::ZERO, DVec2::Y);
+        let mut strict = 0;
+        for n in [1usize, 2, 4, 7, 12, 25] {
+            for k in 0..400 {
+                let mut p = side(&mut rng, n, 1.0);
+                if k % 2 == 1 {
+                    // Some of P's vertices on the line.
+                    for v in &mut p {
+                        if rng.range_i64(0, 3) == 0 {
+                            v.x = 0.0;
+                        }
+                    }
+                }
+                let q = side(&mut rng, n, -1.0);
+                let Ok(f) = validate_touching::<Exact>(&p, &q, a, b) else {
+                    continue;
+                };
+                let Some(f) = f.frames else { continue };
+                let pa = apexes::<Exact>(&prepare::<Exact>(&p, f.p, Chain::P).unwrap(), f.p);
+                let qa = apexes::<Exact>(&prepare::<Exact>(&q, f.q, Chain::Q).unwrap(), f.q);
+                for (bs, fb, us, fu) in [(&pa, f.p, &qa, f.q), (&qa, f.q, &pa, f.p)] {
+                    let r = regions::<Exact>(bs, fb, us, fu);
+                    for (bj, rj) in bs.iter().zip(&r) {
+                        for u in us {
+                            let lit = place::<Exact>(fu, bj.pt, rj, u.pt);
+                            assert_eq!(
+                                band::<Exact>(fu, bj.pt, rj, u.pt),
+                                lit,
+                                "{:?} against R({:?}) = {rj:?}, chains {p:?} {q:?}",
+                                u.pt,
+                                bj.pt
+                            );
+                            strict += usize::from(lit != Place::Inside);
+                        }
+                    }
+                }
+            }
+        }
+        assert!(
+            strict > 10_000,
+            "the generator must place apexes outside regions ({strict})"
+        );
     }
 }
