@@ -321,7 +321,17 @@ impl<K: Kernel> CveMatrix<K> {
     /// `q`: height between `H(q)` and the cap, in the closed `W(q)`, and `q` in the closed wedge of
     /// the point. Each condition is an affine sign along the edge, so the admissible set is an
     /// interval whose ends are roots; `O(1)` predicates of degree ≤ 6.
-    fn admissible_end(&self, pc: &Piece, q: &Apex, cap: Cap, up: bool) -> Option<Param> {
+    ///
+    /// `further` says whether the next piece in the scan's direction (above for `up`) is on the
+    /// same edge: only then can a cap on this edge lie beyond the piece.
+    fn admissible_end(
+        &self,
+        pc: &Piece,
+        q: &Apex,
+        cap: Cap,
+        up: bool,
+        further: bool,
+    ) -> Option<Param> {
         let (fp, fq) = (self.fp, self.fq);
         let e = self.edge(pc.edge);
         let (mut lb, mut ub) = (pc.bot, pc.top);
@@ -357,7 +367,22 @@ impl<K: Kernel> CveMatrix<K> {
         if let Cap::At(c) = cap {
             let bound = if up { &mut ub } else { &mut lb };
             if c.edge == pc.edge {
-                *bound = c.param;
+                // The cap bounds the piece where it lies strictly before the far end; a cap on a
+                // further piece of the same edge (an edge is cut into pieces where `h()`, `l()`
+                // change) leaves the far end, as a cap on a further edge does. Without a further
+                // piece on this edge the cap (a point of some piece, at or beyond this one's near
+                // end: the scan skipped the pieces beyond it) lies on this piece. (Until 2026-11-27
+                // the cap's parameter was taken on whatever piece of the edge it lay; no test input
+                // reached that case. The debug assertion below keeps every answer on its piece.)
+                let far = if up { pc.top } else { pc.bot };
+                let before = if up {
+                    Ordering::Less
+                } else {
+                    Ordering::Greater
+                };
+                if !further || e.cmp::<K>(&c.param, &far) == before {
+                    *bound = c.param;
+                }
             } else {
                 // The cap is on another edge: it bounds this piece only if it is the piece's
                 // far end (then the admissible set is that single point).
@@ -412,12 +437,16 @@ impl<K: Kernel> CveMatrix<K> {
             }
         }
         if e.cmp::<K>(&lb, &ub) == Ordering::Greater {
-            None
-        } else if up {
-            Some(ub)
-        } else {
-            Some(lb)
+            return None;
         }
+        let r = if up { ub } else { lb };
+        debug_assert!(
+            !K::EXACT_DECISIONS
+                || (e.cmp::<K>(&r, &pc.bot) != Ordering::Less
+                    && e.cmp::<K>(&r, &pc.top) != Ordering::Greater),
+            "an admissible point off its piece"
+        );
+        Some(r)
     }
 
     /// `R(q_j)` for every column vertex: `u_j^+` the highest admissible point of the pieces between
@@ -441,7 +470,8 @@ impl<K: Kernel> CveMatrix<K> {
                     k -= 1;
                     continue;
                 }
-                if let Some(t) = self.admissible_end(pc, q, cap, true) {
+                let further = ps.get(k).is_some_and(|n| n.edge == pc.edge);
+                if let Some(t) = self.admissible_end(pc, q, cap, true, further) {
                     out[j].up = Some(EdgePoint {
                         edge: pc.edge,
                         param: t,
@@ -471,7 +501,8 @@ impl<K: Kernel> CveMatrix<K> {
                     k += 1;
                     continue;
                 }
-                if let Some(t) = self.admissible_end(pc, q, cap, false) {
+                let further = k > 0 && ps[k - 1].edge == pc.edge;
+                if let Some(t) = self.admissible_end(pc, q, cap, false, further) {
                     out[j].down = Some(EdgePoint {
                         edge: pc.edge,
                         param: t,
