@@ -371,11 +371,9 @@ impl<K: Kernel> CveMatrix<K> {
                 // further piece of the same edge (an edge is cut into pieces where `h()`, `l()`
                 // change) leaves the far end, as a cap on a further edge does. Without a further
                 // piece on this edge the cap (a point of some piece, at or beyond this one's near
-                // end: the scan skipped the pieces beyond it) lies on this piece. (Until 2026-11-27
-                // the cap's parameter was taken on whatever piece of the edge it lay. The test suite
-                // puts a cap strictly beyond the far end about 22,600 times; each time a condition
-                // failing at the far end cut the interval back onto the piece, so no answer changes.
-                // The debug assertion below keeps every answer on its piece.)
+                // end: the scan skipped the pieces beyond it) lies on this piece. The debug
+                // assertion below keeps every answer on its piece (history and counts:
+                // docs/algorithms/separation.md, "CVE: regions and matrix").
                 let far = if up { pc.top } else { pc.bot };
                 let before = if up {
                     Ordering::Less
@@ -558,24 +556,26 @@ impl<K: Kernel> Matrix for CveMatrix<K> {
             Some(u) => self.fq.cmp_height::<K>(q, u) == Ordering::Less,
             None => vs_q().0 == Ordering::Greater,
         };
-        let piece_above = q_below
+        // `q` below `R(e_i)`, or the piece above `R(q_j)`.
+        let penalty = q_below
             || match cb.up {
                 Some(c) => self.cmp_points(&bot, &c) == Ordering::Greater,
                 None => vs_q().0 == Ordering::Greater,
             };
-        if piece_above {
+        if penalty {
             return EdgeEntry::Penalty(self.cols.len() - j);
         }
         let q_above = match pb.up {
             Some(u) => self.fq.cmp_height::<K>(q, u) == Ordering::Greater,
             None => vs_q().1 == Ordering::Less,
         };
-        let piece_below = q_above
+        // `q` above `R(e_i)`, or the piece below `R(q_j)`.
+        let infinite = q_above
             || match cb.down {
                 Some(c) => self.cmp_points(&top, &c) == Ordering::Less,
                 None => vs_q().1 == Ordering::Less,
             };
-        if piece_below {
+        if infinite {
             EdgeEntry::Infinity
         } else {
             let r = &self.edges[pc.edge];

@@ -107,7 +107,7 @@ pub(crate) fn band<K: Kernel>(fu: Frame, b: DVec2, r: &Region, z: DVec2) -> Plac
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::chain::{validate, validate_touching};
+    use crate::chain::{Frames, validate, validate_touching};
     use crate::envelope::prepare;
     use crate::error::Chain;
     use crate::wedge::apexes;
@@ -147,6 +147,13 @@ mod tests {
         ys.into_iter()
             .map(|y| DVec2::new(sign * rng.range_i64(1, 7) as f64, y as f64))
             .collect()
+    }
+
+    /// Both chains' apexes (the envelope's vertices after Lemma 3), as `CvvMatrix` builds them.
+    fn apexes_of(p: &[DVec2], q: &[DVec2], f: Frames) -> (Vec<Apex>, Vec<Apex>) {
+        let pa = apexes::<Exact>(&prepare::<Exact>(p, f.p, Chain::P).unwrap(), f.p);
+        let qa = apexes::<Exact>(&prepare::<Exact>(q, f.q, Chain::Q).unwrap(), f.q);
+        (pa, qa)
     }
 
     /// The definition of `u^+`, scanned in `O(n_b · n_u)`: from the top, the highest admissible `u`
@@ -195,8 +202,7 @@ mod tests {
                 let p = side(&mut rng, n, 1.0);
                 let q = side(&mut rng, n, -1.0);
                 let f = validate::<Exact>(&p, &q, a, b).unwrap();
-                let pa = apexes::<Exact>(&prepare::<Exact>(&p, f.p, Chain::P).unwrap(), f.p);
-                let qa = apexes::<Exact>(&prepare::<Exact>(&q, f.q, Chain::Q).unwrap(), f.q);
+                let (pa, qa) = apexes_of(&p, &q, f);
                 for (bs, fb, us, fu) in [(&pa, f.p, &qa, f.q), (&qa, f.q, &pa, f.p)] {
                     let r = regions::<Exact>(bs, fb, us, fu);
                     let up: Vec<_> = r.iter().map(|r| r.up).collect();
@@ -233,8 +239,7 @@ mod tests {
                     continue;
                 };
                 let Some(f) = f.frames else { continue };
-                let pa = apexes::<Exact>(&prepare::<Exact>(&p, f.p, Chain::P).unwrap(), f.p);
-                let qa = apexes::<Exact>(&prepare::<Exact>(&q, f.q, Chain::Q).unwrap(), f.q);
+                let (pa, qa) = apexes_of(&p, &q, f);
                 for (bs, fb, us, fu) in [(&pa, f.p, &qa, f.q), (&qa, f.q, &pa, f.p)] {
                     let r = regions::<Exact>(bs, fb, us, fu);
                     for (bj, rj) in bs.iter().zip(&r) {
