@@ -327,8 +327,21 @@ pub(crate) fn first_hit_within<K: Kernel>(
     if from == through {
         return Some(Hit::Immediate);
     }
-    let (f, w) = (ring[from], ring[through]);
-    if !enters::<K>(ring, f, through) {
+    hit_beyond::<K>(tri, ring, ring[from], through, budget)
+}
+
+/// [`first_hit_within`] for the ray from ring vertex `through` in direction `ring[through] − f`,
+/// `f` any point other than `ring[through]` (a vertex of another ring, for the pockets of
+/// [`crate::pockets`]).
+pub(crate) fn hit_beyond<K: Kernel>(
+    tri: &Triangulation,
+    ring: &[DVec2],
+    f: DVec2,
+    through: usize,
+    budget: &mut usize,
+) -> Option<Hit> {
+    let w = ring[through];
+    if f == w || !enters::<K>(ring, f, through) {
         return Some(Hit::Immediate);
     }
     let triangles = tri.triangles();
@@ -364,10 +377,68 @@ pub(crate) fn first_hit_within<K: Kernel>(
             Neighbor::RingEdge(_) => break,
         }
     }
-    let Some((mut cur, mut side, mut l)) = found else {
+    let Some((cur, side, l)) = found else {
         // Only under inconsistent signs (Fast): the direction entered but no triangle holds it.
         return Some(Hit::Immediate);
     };
+    walk::<K>(tri, ring, (f, w), (cur, side, l), budget)
+}
+
+/// The first boundary point met by the line through `f` and `w` (`f ≠ w`), from the point where
+/// it crosses ring edge `k` into the polygon onwards: the triangle on edge `k`, then across the
+/// side the line leaves by, as [`first_hit_within`]. The caller knows that the line crosses edge
+/// `k`'s relative interior, entering the polygon there in direction `w − f`. `None` when the walk
+/// would exceed `budget` triangle steps.
+///
+/// # Complexity
+/// `O(d + k)` for `d` triangles at vertex `k` and `k` triangles crossed.
+pub(crate) fn hit_across<K: Kernel>(
+    tri: &Triangulation,
+    ring: &[DVec2],
+    (f, w): (DVec2, DVec2),
+    k: usize,
+    budget: &mut usize,
+) -> Option<Hit> {
+    let triangles = tri.triangles();
+    let neighbors = tri.neighbors();
+    let v = k as u32;
+    let corner = |t: usize| (0..3).find(|&c| triangles[t][c] == v).unwrap_or(0);
+    // Clockwise around vertex `k` to the triangle whose side `k → k + 1` is the ring edge.
+    let mut cur = tri.triangle_at(k);
+    for _ in 0..triangles.len() {
+        match neighbors[cur][corner(cur)] {
+            Neighbor::Triangle(j) => cur = j as usize,
+            Neighbor::RingEdge(_) => break,
+        }
+    }
+    let s = corner(cur);
+    if neighbors[cur][s] != Neighbor::RingEdge(k as u32) {
+        return Some(Hit::Immediate);
+    }
+    // Entering across side `s` (from `k`, on the line's left, to `k + 1`): the third corner
+    // decides the side the line leaves by, as in the walk.
+    let tr = triangles[cur];
+    let z = tr[(s + 2) % 3] as usize;
+    match K::orient(f, w, ring[z]) {
+        Orientation::Collinear => Some(Hit::Vertex(z)),
+        Orientation::Clockwise => walk::<K>(tri, ring, (f, w), (cur, (s + 2) % 3, k), budget),
+        Orientation::CounterClockwise => {
+            walk::<K>(tri, ring, (f, w), (cur, (s + 1) % 3, z), budget)
+        }
+    }
+}
+
+/// The walk of [`first_hit_within`] from triangle `cur`, about to leave it across side `side`,
+/// whose end `l` lies left of the line `f → w`.
+fn walk<K: Kernel>(
+    tri: &Triangulation,
+    ring: &[DVec2],
+    (f, w): (DVec2, DVec2),
+    (mut cur, mut side, mut l): (usize, usize, usize),
+    budget: &mut usize,
+) -> Option<Hit> {
+    let triangles = tri.triangles();
+    let neighbors = tri.neighbors();
     // The dual graph is a tree and the walk never leaves by the side it came in, so it visits each
     // triangle at most once.
     for _ in 0..triangles.len() {

@@ -74,6 +74,7 @@ mod frame;
 mod geodesic;
 mod param;
 mod pieces;
+mod pockets;
 mod polygon;
 mod polyline;
 mod region;

@@ -35,6 +35,7 @@ use crate::brute::{
 use crate::error::SeparationError;
 use crate::geodesic::{Hit, first_hit_within, merge_collinear, shortest_path};
 use crate::param::{Affine, Edge, Param};
+use crate::pockets::{Pruned, Wall};
 use crate::result::{ClosestPair, SeparationStats};
 use crate::sigma::separation_of_chains;
 use crate::spm::{Extensions, extensions};
@@ -936,11 +937,22 @@ pub(crate) fn build_with_hulls<K: Kernel>(
     let Some((rs, swapped)) = regions::<K>(p, q, hp, hq)? else {
         return Ok(None);
     };
+    let (wp, wq) = (
+        Wall {
+            vertices: p.vertices(),
+            hull: hp,
+        },
+        Wall {
+            vertices: q.vertices(),
+            hull: hq,
+        },
+    );
+    let (wp, wq) = if swapped { (wq, wp) } else { (wp, wq) };
     // The containing case's two regions are cut into the same two halves: triangulated once.
     let mut halves = Halves::default();
     let passes = rs
         .into_iter()
-        .map(|r| build_region::<K>(r, &mut halves))
+        .map(|r| build_region_pruned::<K>(r, &mut halves, wp, wq))
         .collect::<Result<Vec<_>, _>>()?;
     Ok(Some(Plan { passes, swapped }))
 }
@@ -956,7 +968,9 @@ fn runs_with_arms<K: Kernel>(
     ring: &[DVec2],
     path: &[usize],
     mut budget: usize,
-) -> Vec<Seg> {
+    mut resolve: impl FnMut(usize, usize, Hit) -> Option<End>,
+    index: impl Fn(usize) -> usize,
+) -> Option<Vec<Seg>> {
     let k = path.len() - 1;
     // The trees from the path's start (forward arms) and end (backward arms), built on demand.
     let mut trees: [Option<Extensions>; 2] = [None, None];
@@ -966,32 +980,37 @@ fn runs_with_arms<K: Kernel>(
             let tree = trees[slot].get_or_insert_with(|| extensions::<K>(tri, ring, s));
             tree.hit[through]
         });
-        match hit {
-            Some(Hit::Vertex(w)) => End::Vertex(w),
-            Some(Hit::Edge(e)) => End::Edge(e),
-            Some(Hit::Immediate) | None => End::Run,
-        }
+        resolve(from, through, hit.unwrap_or(Hit::Immediate))
     };
-    (0..k)
-        .map(|j| {
-            let bottom = if j == 0 {
-                End::Run
-            } else {
-                arm(path[j + 1], path[j], false)
-            };
-            let top = if j + 1 == k {
-                End::Run
-            } else {
-                arm(path[j], path[j + 1], true)
-            };
-            Seg {
-                lo: path[j],
-                hi: path[j + 1],
-                bottom,
-                top,
-            }
-        })
-        .collect()
+    let mut runs = Vec::with_capacity(k);
+    for j in 0..k {
+        let bottom = if j == 0 {
+            End::Run
+        } else {
+            arm(path[j + 1], path[j], false)?
+        };
+        let top = if j + 1 == k {
+            End::Run
+        } else {
+            arm(path[j], path[j + 1], true)?
+        };
+        runs.push(Seg {
+            lo: index(path[j]),
+            hi: index(path[j + 1]),
+            bottom,
+            top,
+        });
+    }
+    Some(runs)
+}
+
+/// A hit as an end on the ring walked (no pruned pockets).
+fn plain(_: usize, _: usize, hit: Hit) -> Option<End> {
+    Some(match hit {
+        Hit::Vertex(w) => End::Vertex(w),
+        Hit::Edge(e) => End::Edge(e),
+        Hit::Immediate => End::Run,
+    })
 }
 
 /// Step 3: the region's triangulation and the geodesic from `p_b` (ring vertex 0) to `p_t`.
@@ -1019,8 +1038,51 @@ pub(crate) fn build_region<K: Kernel>(
     cache: &mut Halves,
 ) -> Result<Built, SeparationError> {
     let (tri, path) = geodesic_of::<K>(&region, cache)?;
-    let k = path.len() - 1;
-    let runs = runs_with_arms::<K>(&tri, &region.ring, &path, 8 * region.ring.len() + 64);
+    let budget = 8 * region.ring.len() + 64;
+    let runs = runs_with_arms::<K>(&tri, &region.ring, &path, budget, plain, |i| i)
+        .ok_or(SeparationError::Inconsistent)?;
+    Ok(finish::<K>(region, runs))
+}
+
+/// [`build_region`] with the unentered pockets of the walls cut off before triangulating
+/// ([`pockets`](crate::pockets)): the geodesic of the reduced region, its arms carried on into the
+/// pockets they enter, then steps 5–6 on the full region. Falls back to [`build_region`] when
+/// nothing is pruned, or the walks in the pockets exceed their budget (`8N + 64` triangle steps:
+/// so the pruning costs `O(N)` beyond the unpruned construction, `O(N log N)` in all).
+fn build_region_pruned<K: Kernel>(
+    region: Region,
+    cache: &mut Halves,
+    p: Wall<'_>,
+    q: Wall<'_>,
+) -> Result<Built, SeparationError> {
+    let Some(pruned) = crate::pockets::prune::<K>(&region, p, q) else {
+        return build_region::<K>(region, cache);
+    };
+    match pruned_runs::<K>(&pruned, region.ring.len(), cache) {
+        Some(runs) => Ok(finish::<K>(region, runs)),
+        None => build_region::<K>(region, cache),
+    }
+}
+
+/// Steps 3–4 on the reduced region, the runs and their ends read on the full ring (of `n`
+/// vertices); `None` when the reduced region fails or the pocket walks exceed their budget.
+fn pruned_runs<K: Kernel>(pruned: &Pruned, n: usize, cache: &mut Halves) -> Option<Vec<Seg>> {
+    let (tri, path) = geodesic_of::<K>(&pruned.region, cache).ok()?;
+    let ring = &pruned.region.ring;
+    let mut pocket_budget = 8 * n + 64;
+    runs_with_arms::<K>(
+        &tri,
+        ring,
+        &path,
+        8 * ring.len() + 64,
+        |from, through, hit| pruned.resolve::<K>(from, through, hit, &mut pocket_budget),
+        |i| pruned.keep[i],
+    )
+}
+
+/// Steps 5–6: the kept runs, the cuts and the subchains.
+fn finish<K: Kernel>(region: Region, runs: Vec<Seg>) -> Built {
+    let k = runs.len();
     // Step 5: greedy pruning; the scan from the last kept stops at the first run that misses it.
     let mut kept = vec![0];
     let mut a = 0;
@@ -1113,14 +1175,14 @@ pub(crate) fn build_region<K: Kernel>(
         };
         sub.push((prange, qrange));
     }
-    Ok(Built {
+    Built {
         region,
         runs,
         kept,
         sub,
         cuts: pc.iter().copied().zip(qc.iter().copied()).collect(),
         cut_fallbacks,
-    })
+    }
 }
 
 /// A candidate pair in internal features of `P` and `Q`.
@@ -2182,8 +2244,9 @@ mod tests {
                 let Ok((tri, path)) = geodesic_of::<Robust>(&region, &mut Halves::default()) else {
                     continue;
                 };
-                let walked = runs_with_arms::<Robust>(&tri, &region.ring, &path, usize::MAX);
-                let trees = runs_with_arms::<Robust>(&tri, &region.ring, &path, 0);
+                let walked =
+                    runs_with_arms::<Robust>(&tri, &region.ring, &path, usize::MAX, plain, |i| i);
+                let trees = runs_with_arms::<Robust>(&tri, &region.ring, &path, 0, plain, |i| i);
                 assert_eq!(
                     walked,
                     trees,
@@ -2876,5 +2939,139 @@ mod tests {
         let _ = scan_pruned::<Counted<Robust>>(&p, &q, true);
         let pruned = predicate_counts().total();
         assert!(pruned * 20 < full, "{pruned} against {full}");
+    }
+
+    /// What [`check_pruned`] saw: regions pruned (of them in the containing case), ring vertices
+    /// cut off, arms ending inside a pruned pocket.
+    #[derive(Default)]
+    struct PruneCounts {
+        regions: usize,
+        containing: usize,
+        removed: usize,
+        arms_inside: usize,
+    }
+
+    /// Builds every region of `(p, q)` pruned and unpruned and asserts that the reduced region's
+    /// runs, read on the full ring with their arms carried on into the pockets, are the unpruned
+    /// runs (walked without budget), and so are the kept runs, cuts and subchains.
+    fn check_pruned<K: Kernel>(p: &SimplePolygon, q: &SimplePolygon, counts: &mut PruneCounts) {
+        let (hp, hq) = (hull_indices::<K>(p), hull_indices::<K>(q));
+        let Ok(Some((rs, swapped))) = regions::<K>(p, q, &hp, &hq) else {
+            return;
+        };
+        let (wp, wq) = (
+            Wall {
+                vertices: p.vertices(),
+                hull: &hp,
+            },
+            Wall {
+                vertices: q.vertices(),
+                hull: &hq,
+            },
+        );
+        let (wp, wq) = if swapped { (wq, wp) } else { (wp, wq) };
+        for r in rs {
+            let Some(pruned) = crate::pockets::prune::<K>(&r, wp, wq) else {
+                continue;
+            };
+            let n = r.ring.len();
+            let Ok((tri, path)) = geodesic_of::<K>(&r, &mut Halves::default()) else {
+                continue;
+            };
+            let full = runs_with_arms::<K>(&tri, &r.ring, &path, usize::MAX, plain, |i| i).unwrap();
+            let runs = pruned_runs::<K>(&pruned, n, &mut Halves::default()).unwrap_or_else(|| {
+                panic!(
+                    "no pruned runs: P = {:?}\nQ = {:?}",
+                    p.vertices(),
+                    q.vertices()
+                )
+            });
+            assert_eq!(runs, full, "P = {:?}\nQ = {:?}", p.vertices(), q.vertices());
+            let mut kept = vec![false; n];
+            for &i in &pruned.keep {
+                kept[i] = true;
+            }
+            counts.arms_inside += runs
+                .iter()
+                .flat_map(|s| [s.bottom, s.top])
+                .filter(|e| match *e {
+                    End::Vertex(v) => !kept[v],
+                    End::Edge(e) => !kept[e] || !kept[(e + 1) % n],
+                    End::Run => false,
+                })
+                .count();
+            counts.regions += 1;
+            counts.containing += usize::from(r.gap.is_some());
+            counts.removed += n - pruned.keep.len();
+            let a = finish::<K>(r.clone(), runs);
+            let b = build_region::<K>(r, &mut Halves::default()).unwrap();
+            assert_eq!((&a.kept, &a.sub, &a.cuts), (&b.kept, &b.sub, &b.cuts));
+        }
+    }
+
+    /// A star pair scaled by 32 or 64 and snapped to the integer lattice: vertices on the other
+    /// polygon's hull lines, collinear hull vertices, lids touched (degenerate contacts).
+    fn snapped_pair(seed: u64) -> Option<(SimplePolygon, SimplePolygon)> {
+        let (p, q) = star_pair(seed)?;
+        let scale = if seed % 2 == 0 { 32.0 } else { 64.0 };
+        let snap = |x: &SimplePolygon| {
+            let v: Vec<DVec2> = x.vertices().iter().map(|&v| (v * scale).round()).collect();
+            SimplePolygon::try_new(&v).ok()
+        };
+        let (p, q) = (snap(&p)?, snap(&q)?);
+        crate::polygon::intersection::<Robust>(&p, &q)
+            .is_none()
+            .then_some((p, q))
+    }
+
+    /// Cutting off the unentered pockets before triangulating changes no separator
+    /// ([`check_pruned`]), on star pairs (whose hulls overlap), the interlocked families, stars in
+    /// a pocket (both orders), interleaved combs and snapped star pairs. Some arms must end inside
+    /// a pruned pocket, and regions must fall in both cases.
+    #[test]
+    fn pruned_pockets_change_no_separator() {
+        let mut pairs: Vec<(SimplePolygon, SimplePolygon)> =
+            (0..400).filter_map(star_pair).collect();
+        pairs.extend((0..300).filter_map(family_pair));
+        pairs.extend((0..1000).filter_map(snapped_pair));
+        for (teeth, len) in [(2, 3), (6, 5), (17, 9)] {
+            let pair = polydist_oracle::interleaved_combs(teeth, len, 0.125);
+            pairs.push((poly(&pair.a), poly(&pair.b)));
+        }
+        for seed in 0..400 {
+            if let Some((p, q)) = pocket_pair(seed) {
+                pairs.push((q.clone(), p.clone()));
+                pairs.push((p, q));
+            }
+        }
+        let mut counts = PruneCounts::default();
+        for (p, q) in &pairs {
+            check_pruned::<Robust>(p, q, &mut counts);
+        }
+        let c = counts;
+        assert!(
+            c.regions > c.containing + 100 && c.containing > 100 && c.arms_inside > 100,
+            "{} regions pruned ({} containing), {} vertices removed, {} arms end inside a pocket",
+            c.regions,
+            c.containing,
+            c.removed,
+            c.arms_inside
+        );
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(64))]
+
+        /// [`check_pruned`] on random seeds of every generator, under Robust and Exact.
+        #[test]
+        fn proptest_pruned_pockets_change_no_separator(seed in proptest::prelude::any::<u64>()) {
+            let mut counts = PruneCounts::default();
+            let pairs = [star_pair(seed), family_pair(seed), snapped_pair(seed), pocket_pair(seed)];
+            for (p, q) in pairs.into_iter().flatten() {
+                check_pruned::<Robust>(&p, &q, &mut counts);
+                check_pruned::<Exact>(&p, &q, &mut counts);
+                check_pruned::<Robust>(&q, &p, &mut counts);
+            }
+        }
     }
 }
