@@ -246,7 +246,7 @@ fn admitted<K: Kernel>(c: Cand, p: &[DVec2], q: &[DVec2], interior_only: bool) -
 /// the two gaps (exact, so the answer is the kernel's without its exact stage, which every tie
 /// would otherwise pay). Out of line: only near ties get here, and the scans' loops stay small.
 #[inline(never)]
-fn cmp_scan<K: Kernel>(x: Dist2, y: Dist2) -> Ordering {
+pub(crate) fn cmp_scan<K: Kernel>(x: Dist2, y: Dist2) -> Ordering {
     if K::EXACT_DECISIONS {
         if let (Some(gx), Some(gy)) = (axis_gap(x), axis_gap(y)) {
             return gx.total_cmp(&gy);
@@ -256,14 +256,26 @@ fn cmp_scan<K: Kernel>(x: Dist2, y: Dist2) -> Ordering {
 }
 
 /// The distance `d ≥ 0` of a [`Dist2`], exactly, when it is the difference of two coordinates
-/// computed without rounding: two points on a horizontal or vertical line, or a point and the line
-/// of a horizontal or vertical edge (`a ≠ b`). `None` otherwise.
+/// computed without rounding: two points on a horizontal or vertical line, a point and the line
+/// of a horizontal or vertical edge (`a ≠ b`), or a point and such a segment when the point's
+/// projection falls on it (closed; exact coordinate comparisons). `None` otherwise.
 fn axis_gap(d: Dist2) -> Option<f64> {
     match d {
         Dist2::PointPoint(p, q) if p.y == q.y => exact_gap(p.x, q.x),
         Dist2::PointPoint(p, q) if p.x == q.x => exact_gap(p.y, q.y),
         Dist2::PointLine(v, a, b) if a.x == b.x && a.y != b.y => exact_gap(v.x, a.x),
         Dist2::PointLine(v, a, b) if a.y == b.y && a.x != b.x => exact_gap(v.y, a.y),
+        // A point and a horizontal or vertical segment, the point's projection on it.
+        Dist2::PointSegment(v, a, b)
+            if a.x == b.x && a.y != b.y && a.y.min(b.y) <= v.y && v.y <= a.y.max(b.y) =>
+        {
+            exact_gap(v.x, a.x)
+        }
+        Dist2::PointSegment(v, a, b)
+            if a.y == b.y && a.x != b.x && a.x.min(b.x) <= v.x && v.x <= a.x.max(b.x) =>
+        {
+            exact_gap(v.y, a.y)
+        }
         _ => None,
     }
 }
@@ -852,8 +864,9 @@ mod tests {
     }
 
     /// The scans' shortcut for axis-parallel distances agrees with the exact kernel, on lattice
-    /// points (axis-parallel pairs and edges galore, exact differences) and on points whose
-    /// differences round (the shortcut must decline).
+    /// points (axis-parallel pairs, lines and segments galore, exact differences, projections
+    /// inside, outside and at the ends of segments) and on points whose differences round (the
+    /// shortcut must decline).
     #[test]
     fn axis_gaps_order_as_the_exact_kernel() {
         use polydist_predicates::Exact;
@@ -863,11 +876,12 @@ mod tests {
             let class = if round % 4 == 0 { 4 } else { 1 };
             let mut pt = || point(&mut rng, class);
             let (v, a, b, w, c, d) = (pt(), pt(), pt(), pt(), pt(), pt());
-            let dist = |k: u64, v: DVec2, a: DVec2, b: DVec2| match k % 2 {
+            let dist = |k: u64, v: DVec2, a: DVec2, b: DVec2| match k % 3 {
                 0 => Dist2::PointPoint(v, a),
-                _ => Dist2::PointLine(v, a, b),
+                1 => Dist2::PointLine(v, a, b),
+                _ => Dist2::PointSegment(v, a, b),
             };
-            let (x, y) = (dist(rng.below(2), v, a, b), dist(rng.below(2), w, c, d));
+            let (x, y) = (dist(rng.below(3), v, a, b), dist(rng.below(3), w, c, d));
             shortcut += usize::from(axis_gap(x).is_some() && axis_gap(y).is_some());
             assert_eq!(
                 cmp_scan::<Robust>(x, y),

@@ -30,7 +30,8 @@ use polydist_polygon::{Feature, SimplePolygon, convex_hull_of_two_with};
 #[cfg(test)]
 use crate::brute::separation_brute;
 use crate::brute::{
-    Winner, farther_from_line_than, scan_pruned_winner_below, scan_winner_below, upper_bound,
+    Winner, cmp_scan, farther_from_line_than, scan_pruned_winner_below, scan_winner_below,
+    upper_bound,
 };
 use crate::error::SeparationError;
 use crate::geodesic::{Hit, first_hit_within, merge_collinear, shortest_path};
@@ -1340,9 +1341,11 @@ fn solve_pass<K: Kernel>(
                     Err(w) => Found::Scanned(w, fp, fq),
                 };
                 let d = dist_of(vp, vq, fp, fq);
+                // Subproblem winners tie with the best on rectilinear input (combs): compared as
+                // coordinate gaps there, as the scans compare them.
                 if best
                     .as_ref()
-                    .is_none_or(|b| K::cmp_dist2(d, b.d) == Ordering::Less)
+                    .is_none_or(|b| cmp_scan::<K>(d, b.d) == Ordering::Less)
                 {
                     *best = Some(Best {
                         found,
