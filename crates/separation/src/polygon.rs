@@ -182,7 +182,8 @@ fn piece(p: &SimplePolygon, e: usize) -> BoundaryPiece {
 /// # Complexity
 /// Disjoint hulls: as [`separation_of_disjoint`] (`O(N)` plus section 3). Hulls that meet:
 /// `O(N log N)` for the intersection sweep and the triangulation of the region between the facing
-/// chains, `O(N)` for the geodesic, the extension arms and the pruning, and section 3 on each
+/// chains (without the pockets the other polygon never enters, found in `O(N log N)` worst case and
+/// usually `O(N)`), `O(N)` for the geodesic, the extension arms and the greedy pruning, and section 3 on each
 /// subproblem, except `O(|P_i| · |Q_i|)` for a subproblem whose subchains cross its line more often
 /// than section 3's runs allow (`docs/algorithms/separator.md`).
 ///
