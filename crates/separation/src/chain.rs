@@ -44,11 +44,6 @@ impl Prepared {
         (e.a, e.b, e.ia, e.ib)
     }
 
-    /// The caller's edge index of the real edge `k`.
-    pub(crate) fn caller_edge(&self, k: usize) -> usize {
-        self.edges[k].caller
-    }
-
     /// A chain strictly increasing in height given as is (every vertex visible, each edge wholly
     /// on the envelope), for unit tests.
     #[cfg(test)]

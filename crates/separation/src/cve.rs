@@ -17,7 +17,6 @@ use crate::error::{Chain, SeparationError};
 use crate::frame::Frame;
 use crate::param::{Affine, Edge, EdgePoint, Param};
 use crate::pieces::{Piece, pieces};
-use crate::sigma::real_edges;
 use crate::wedge::{Apex, apexes};
 
 /// An entry of the CVE matrix: like [`MatrixEntry`](crate::MatrixEntry), with the distance from
@@ -124,7 +123,7 @@ impl<K: Kernel> CveMatrix<K> {
         let qq = prepare::<K>(q, frames.q, Chain::Q)?;
         let cols = apexes::<K>(&qq, frames.q);
         let ps = pieces::<K>(&pp, frames.p);
-        Ok(Self::build(frames.p, frames.q, real_edges(&pp), ps, cols))
+        Ok(Self::build(frames.p, frames.q, pp.edges, ps, cols))
     }
 
     pub(crate) fn build(
@@ -153,6 +152,11 @@ impl<K: Kernel> CveMatrix<K> {
     /// The edge of row `i`, as the prepared vertex index of its lower end.
     pub(crate) fn row_edge(&self, i: usize) -> usize {
         self.pieces[i].edge
+    }
+
+    /// The envelope edge `k` of the row chain (between its heights `k` and `k + 1`).
+    pub(crate) fn real_edge(&self, k: usize) -> &EnvEdge {
+        &self.edges[k]
     }
 
     /// The column apex `j`.

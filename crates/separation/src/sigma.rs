@@ -8,7 +8,7 @@ use monotone_minima::row_minima_by;
 use polydist_polygon::Feature;
 use polydist_predicates::{Dist2, Kernel, Sign};
 
-use crate::chain::{EnvEdge, OnLine, Prepared, Validated, validate_touching};
+use crate::chain::{OnLine, Validated, validate_touching};
 use crate::construct::{vertex_edge, vertex_vertex};
 use crate::cve::{CveMatrix, EdgeEntry, compare_edge_entries};
 use crate::cvv::CvvMatrix;
@@ -46,8 +46,9 @@ impl Cand {
     }
 }
 
-/// The best candidate of the CVE search for the edges of `edges` against the vertices of `verts`.
-fn cve<K: Kernel>(m: &CveMatrix<K>, edges: &Prepared, p_side: bool) -> Option<Cand> {
+/// The best candidate of the CVE search of `m` (the edges of one chain against the vertices of the
+/// other).
+fn cve<K: Kernel>(m: &CveMatrix<K>, p_side: bool) -> Option<Cand> {
     let minima = row_minima_by(m, compare_edge_entries::<K>);
     let mut best: Option<(usize, usize, EdgeEntry)> = None;
     for (i, &j) in minima.iter().enumerate() {
@@ -63,17 +64,16 @@ fn cve<K: Kernel>(m: &CveMatrix<K>, edges: &Prepared, p_side: bool) -> Option<Ca
         }
     }
     let (i, j, _) = best?;
-    let k = m.row_edge(i);
+    let e = m.real_edge(m.row_edge(i));
     let col = m.column(j);
-    let (a, b, ia, ib) = edges.edge(k);
     Some(Cand::Ve {
         v: col.pt,
         j: col.idx,
-        a,
-        ia,
-        b,
-        ib,
-        edge: edges.caller_edge(k),
+        a: e.a,
+        ia: e.ia,
+        b: e.b,
+        ib: e.ib,
+        edge: e.caller,
         p_side,
     })
 }
@@ -159,8 +159,8 @@ pub fn separation_of_chains<K: Kernel>(
             stats: SeparationStats::default(),
         });
     };
-    let pp = prepare::<K>(p, frames.p, Chain::P)?;
-    let qq = prepare::<K>(q, frames.q, Chain::Q)?;
+    let mut pp = prepare::<K>(p, frames.p, Chain::P)?;
+    let mut qq = prepare::<K>(q, frames.q, Chain::Q)?;
     let pa = apexes::<K>(&pp, frames.p);
     let qa = apexes::<K>(&qq, frames.q);
     let cvv = CvvMatrix::<K>::from_parts(frames, &pp, &qq, pa.clone(), qa.clone());
@@ -171,10 +171,13 @@ pub fn separation_of_chains<K: Kernel>(
     let p_pieces = pieces::<K>(&pp, frames.p);
     let q_pieces = pieces::<K>(&qq, frames.q);
     let stats_pieces = (p_pieces.len(), q_pieces.len());
-    let m_pq = CveMatrix::<K>::build(frames.p, frames.q, real_edges(&pp), p_pieces, qa);
-    let pe_qv = cve(&m_pq, &pp, true);
-    let m_qp = CveMatrix::<K>::build(frames.q, frames.p, real_edges(&qq), q_pieces, pa);
-    let qe_pv = cve(&m_qp, &qq, false);
+    // The matrices take the envelope edges over: nothing else reads them from here on.
+    let edges = core::mem::take(&mut pp.edges);
+    let m_pq = CveMatrix::<K>::build(frames.p, frames.q, edges, p_pieces, qa);
+    let pe_qv = cve(&m_pq, true);
+    let edges = core::mem::take(&mut qq.edges);
+    let m_qp = CveMatrix::<K>::build(frames.q, frames.p, edges, q_pieces, pa);
+    let qe_pv = cve(&m_qp, false);
     let mut best: Option<Cand> = None;
     for c in [vv, pe_qv, qe_pv, on_line].into_iter().flatten() {
         if best.is_none_or(|b| K::cmp_dist2(c.dist(), b.dist()) == Ordering::Less) {
@@ -235,11 +238,6 @@ fn on_the_line<K: Kernel>(p: &[DVec2], q: &[DVec2], on_line: &OnLine) -> Option<
         }
     }
     best
-}
-
-/// The envelope edges of a prepared chain, between consecutive heights.
-pub(crate) fn real_edges(pp: &Prepared) -> Vec<EnvEdge> {
-    pp.edges.clone()
 }
 
 /// The realizing points and caller features of a candidate.
