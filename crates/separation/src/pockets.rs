@@ -227,19 +227,24 @@ fn entered<K: Kernel>(
                 }
             }
             State::Out(a, b) if K::orient(a, b, v) == Orientation::Clockwise => {}
-            State::Start | State::Out(..) => match locate::<K>(hull, v, &mut wedge) {
-                Loc::Boundary => return None,
-                Loc::Outside(a, b) => state = State::Out(a, b),
-                Loc::Inside => {
-                    if matches!(state, State::Start) {
-                        return None;
-                    }
-                    let t = match [last, last + 1, last.wrapping_sub(1)]
-                        .into_iter()
-                        .find(|&c| c < lids.len() && crosses(c, u, v))
-                    {
-                        Some(t) => t,
-                        None => {
+            State::Start | State::Out(..) => {
+                let out = matches!(state, State::Out(..));
+                // An edge from outside the hull that properly crosses a lid enters its pocket: the
+                // lids next to the last one entered are tried before locating the vertex.
+                let near = [last, last + 1, last.wrapping_sub(1)]
+                    .into_iter()
+                    .find(|&c| out && c < lids.len() && crosses(c, u, v));
+                let t = match near {
+                    Some(t) => t,
+                    None => match locate::<K>(hull, v, &mut wedge) {
+                        Loc::Boundary => return None,
+                        Loc::Outside(a, b) => {
+                            state = State::Out(a, b);
+                            u = v;
+                            continue;
+                        }
+                        Loc::Inside if !out => return None,
+                        Loc::Inside => {
                             // The last end, clockwise from ends[0] around v, not after u.
                             let e0 = ends[0];
                             let (mut lo, mut hi) = (0, ends.len() - 1);
@@ -258,19 +263,19 @@ fn entered<K: Kernel>(
                             }
                             lo / 2
                         }
-                    };
-                    if !hit[t] {
-                        hit[t] = true;
-                        open -= 1;
-                        if open == 0 {
-                            // Every pocket entered: nothing to prune.
-                            return Some(hit);
-                        }
+                    },
+                };
+                if !hit[t] {
+                    hit[t] = true;
+                    open -= 1;
+                    if open == 0 {
+                        // Every pocket entered: nothing to prune.
+                        return Some(hit);
                     }
-                    last = t;
-                    state = State::In(t);
                 }
-            },
+                last = t;
+                state = State::In(t);
+            }
         }
         u = v;
     }

@@ -98,7 +98,7 @@ pub fn extensions<K: Kernel>(tri: &Triangulation, ring: &[DVec2], s: usize) -> E
     // Depth ≤ the number of triangles, and each level reaches one slot beyond its parent's range.
     let mid = n + 4;
     let mut buf = vec![0u32; 2 * n + 8];
-    let mut undo: Vec<(usize, u32)> = Vec::new();
+    let mut undo: Vec<(usize, u32)> = Vec::with_capacity(n);
     let mut stack: Vec<Task> = Vec::new();
     // Each triangle is entered once (the dual graph is a tree); the flag keeps every loop finite and
     // every index in range even on a triangulation built from inconsistent (Fast) signs.
