@@ -18,11 +18,17 @@
 //! their first boundary point then lies inside the pocket, found by a walk in the pocket's own
 //! triangulation, built on first use ([`Pruned::resolve`]).
 //!
-//! Costs: `O(|X′|)` orientation tests to find the lids of wall `X′`, `O(|Y′| log h)` to decide
-//! which ones `Y′` enters (`h` the hull's size), the reduced ring `O(N)`. Not pruned: the pinched
-//! channel (its cut would have to avoid the lids), the `Q` wall of the containing case (the pocket
-//! wall, which holds `P`), and a wall whose other wall has a vertex on its hull's boundary or
-//! starts inside it (degenerate contacts, left to the unpruned construction).
+//! The cut of a weakly simple region (pinched channel, containing case) is kept: it leaves `P`'s
+//! extreme vertex `u` and lies strictly beyond `u`'s level but for `u` (`separator::cut_target`), so it
+//! enters no pocket of `P`; a segment entering a pocket of `Q` across its lid could only end in it,
+//! and a lid whose stretch holds the cut's end is never pruned.
+//!
+//! Costs: `O(|X′|)` to find the hull lids of wall `X′` (no predicate), `O(|Y′| log h)` orientation
+//! tests to decide which ones `Y′` enters (`h` the hull's size), `O(|stretch|)` to split the
+//! unentered ones at collinear vertices, the reduced ring `O(N)`. Not pruned: the `Q` wall of the
+//! containing case (the pocket wall, which holds `P`), and a wall whose other wall has a vertex on
+//! its hull's boundary or starts inside it (degenerate contacts, left to the unpruned
+//! construction).
 
 use core::cell::OnceCell;
 
@@ -285,9 +291,6 @@ fn entered<K: Kernel>(
 /// The region's unentered pockets, cut off. `None` when there is none (or the region is one this
 /// does not prune; see the module documentation). `p` and `q` are the region's `P` and `Q`.
 pub(crate) fn prune<K: Kernel>(r: &Region, p: Wall<'_>, q: Wall<'_>) -> Option<Pruned> {
-    if r.cut.is_some() && r.gap.is_none() {
-        return None;
-    }
     let n = r.ring.len();
     let sp: Vec<usize> = (r.pt()..n).chain(core::iter::once(0)).collect();
     let sq: Vec<usize> = (1..=r.qt).collect();

@@ -2944,12 +2944,13 @@ mod tests {
         assert!(pruned * 20 < full, "{pruned} against {full}");
     }
 
-    /// What [`check_pruned`] saw: regions pruned (of them in the containing case), ring vertices
-    /// cut off, arms ending inside a pruned pocket.
+    /// What [`check_pruned`] saw: regions pruned (of them in the containing case and in the
+    /// pinched channel), ring vertices cut off, arms ending inside a pruned pocket.
     #[derive(Default)]
     struct PruneCounts {
         regions: usize,
         containing: usize,
+        pinched: usize,
         removed: usize,
         arms_inside: usize,
     }
@@ -3005,6 +3006,7 @@ mod tests {
                 .count();
             counts.regions += 1;
             counts.containing += usize::from(r.gap.is_some());
+            counts.pinched += usize::from(r.cut.is_some() && r.gap.is_none());
             counts.removed += n - pruned.keep.len();
             let a = finish::<K>(r.clone(), runs);
             let b = build_region::<K>(r, &mut Halves::default()).unwrap();
@@ -3030,7 +3032,7 @@ mod tests {
     /// Cutting off the unentered pockets before triangulating changes no separator
     /// ([`check_pruned`]), on star pairs (whose hulls overlap), the interlocked families, stars in
     /// a pocket (both orders), interleaved combs and snapped star pairs. Some arms must end inside
-    /// a pruned pocket, and regions must fall in both cases.
+    /// a pruned pocket, and regions must fall in every case (the pinched channel included).
     #[test]
     fn pruned_pockets_change_no_separator() {
         let mut pairs: Vec<(SimplePolygon, SimplePolygon)> =
@@ -3053,10 +3055,15 @@ mod tests {
         }
         let c = counts;
         assert!(
-            c.regions > c.containing + 100 && c.containing > 100 && c.arms_inside > 100,
-            "{} regions pruned ({} containing), {} vertices removed, {} arms end inside a pocket",
+            c.regions > c.containing + 100
+                && c.containing > 100
+                && c.pinched > 10
+                && c.arms_inside > 100,
+            "{} regions pruned ({} containing, {} pinched), {} vertices removed, {} arms end inside \
+             a pocket",
             c.regions,
             c.containing,
+            c.pinched,
             c.removed,
             c.arms_inside
         );
