@@ -349,13 +349,7 @@ pub(crate) fn hit_beyond<K: Kernel>(
     let v = through as u32;
     let corner = |t: usize| (0..3).find(|&c| triangles[t][c] == v).unwrap_or(0);
     // Rewind clockwise around `through` to the triangle on the ring edge through → through + 1.
-    let mut cur = tri.triangle_at(through);
-    for _ in 0..triangles.len() {
-        match neighbors[cur][corner(cur)] {
-            Neighbor::Triangle(j) => cur = j as usize,
-            Neighbor::RingEdge(_) => break,
-        }
-    }
+    let mut cur = on_ring_edge(tri, through);
     // Forward counter-clockwise until the triangle whose angle [x, y) holds the direction.
     let mut found = None;
     for _ in 0..triangles.len() {
@@ -401,17 +395,10 @@ pub(crate) fn hit_across<K: Kernel>(
 ) -> Option<Hit> {
     let triangles = tri.triangles();
     let neighbors = tri.neighbors();
-    let v = k as u32;
-    let corner = |t: usize| (0..3).find(|&c| triangles[t][c] == v).unwrap_or(0);
-    // Clockwise around vertex `k` to the triangle whose side `k → k + 1` is the ring edge.
-    let mut cur = tri.triangle_at(k);
-    for _ in 0..triangles.len() {
-        match neighbors[cur][corner(cur)] {
-            Neighbor::Triangle(j) => cur = j as usize,
-            Neighbor::RingEdge(_) => break,
-        }
-    }
-    let s = corner(cur);
+    let cur = on_ring_edge(tri, k);
+    let s = (0..3)
+        .find(|&c| triangles[cur][c] as usize == k)
+        .unwrap_or(0);
     if neighbors[cur][s] != Neighbor::RingEdge(k as u32) {
         return Some(Hit::Immediate);
     }
@@ -426,6 +413,22 @@ pub(crate) fn hit_across<K: Kernel>(
             walk::<K>(tri, ring, (f, w), (cur, (s + 1) % 3, z), budget)
         }
     }
+}
+
+/// The triangle whose side from ring vertex `v` to `v + 1` is that ring edge: clockwise around `v`
+/// from any triangle at it. `O(d)` for the `d` triangles at `v` (bounded by the triangle count, so
+/// it ends on an inconsistent triangulation too).
+fn on_ring_edge(tri: &Triangulation, v: usize) -> usize {
+    let (triangles, neighbors) = (tri.triangles(), tri.neighbors());
+    let corner = |t: usize| (0..3).find(|&c| triangles[t][c] as usize == v).unwrap_or(0);
+    let mut cur = tri.triangle_at(v);
+    for _ in 0..triangles.len() {
+        match neighbors[cur][corner(cur)] {
+            Neighbor::Triangle(j) => cur = j as usize,
+            Neighbor::RingEdge(_) => break,
+        }
+    }
+    cur
 }
 
 /// The walk of [`first_hit_within`] from triangle `cur`, about to leave it across side `side`,

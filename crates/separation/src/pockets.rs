@@ -33,6 +33,7 @@
 use core::cell::OnceCell;
 
 use glam::DVec2;
+use polydist_polygon::SimplePolygon;
 use polydist_polygon::predicates::{Kernel, Orientation, Sign};
 
 use crate::geodesic::{Hit, enters, hit_across, hit_beyond};
@@ -45,6 +46,24 @@ use crate::triangulate::{Triangulation, triangulate};
 pub(crate) struct Wall<'a> {
     pub(crate) vertices: &'a [DVec2],
     pub(crate) hull: &'a [usize],
+}
+
+/// The walls of the regions that [`regions`](crate::separator::regions) built for `(p, q)` with
+/// hulls `hp`, `hq`: the region's `P` and `Q`, swapped back when the regions were built swapped.
+pub(crate) fn walls<'a>(
+    (p, hp): (&'a SimplePolygon, &'a [usize]),
+    (q, hq): (&'a SimplePolygon, &'a [usize]),
+    swapped: bool,
+) -> (Wall<'a>, Wall<'a>) {
+    let wp = Wall {
+        vertices: p.vertices(),
+        hull: hp,
+    };
+    let wq = Wall {
+        vertices: q.vertices(),
+        hull: hq,
+    };
+    if swapped { (wq, wp) } else { (wp, wq) }
 }
 
 /// A pruned pocket: the full ring's stretch `lo, lo + 1, …, lo + len − 1` (mod `n`), its lid the
@@ -464,7 +483,6 @@ mod tests {
     use super::*;
     use crate::separator::regions;
     use core::f64::consts::TAU;
-    use polydist_polygon::SimplePolygon;
     use polydist_polygon::predicates::{Counted, Robust, predicate_counts, reset_predicate_counts};
 
     /// A star of `n` spikes (radii 1 and 1/2) inside a C whose inner wall has `n` notches: the
@@ -503,17 +521,7 @@ mod tests {
             q.convex_hull_and_indices_with::<K>().1,
         );
         let (rs, swapped) = regions::<K>(p, q, &hp, &hq).unwrap().unwrap();
-        let (wp, wq) = (
-            Wall {
-                vertices: p.vertices(),
-                hull: &hp,
-            },
-            Wall {
-                vertices: q.vertices(),
-                hull: &hq,
-            },
-        );
-        let (wp, wq) = if swapped { (wq, wp) } else { (wp, wq) };
+        let (wp, wq) = walls((p, &hp), (q, &hq), swapped);
         let (mut ring, mut removed) = (0, 0);
         reset_predicate_counts();
         for r in &rs {

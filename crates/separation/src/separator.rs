@@ -36,7 +36,7 @@ use crate::brute::{
 use crate::error::SeparationError;
 use crate::geodesic::{Hit, first_hit_within, merge_collinear, shortest_path};
 use crate::param::{Affine, Edge, Param};
-use crate::pockets::{Pruned, Wall};
+use crate::pockets::{Pruned, Wall, walls};
 use crate::result::{ClosestPair, SeparationStats};
 use crate::sigma::separation_of_chains;
 use crate::spm::{Extensions, extensions};
@@ -938,17 +938,7 @@ pub(crate) fn build_with_hulls<K: Kernel>(
     let Some((rs, swapped)) = regions::<K>(p, q, hp, hq)? else {
         return Ok(None);
     };
-    let (wp, wq) = (
-        Wall {
-            vertices: p.vertices(),
-            hull: hp,
-        },
-        Wall {
-            vertices: q.vertices(),
-            hull: hq,
-        },
-    );
-    let (wp, wq) = if swapped { (wq, wp) } else { (wp, wq) };
+    let (wp, wq) = walls((p, hp), (q, hq), swapped);
     // The containing case's two regions are cut into the same two halves: triangulated once.
     let mut halves = Halves::default();
     let passes = rs
@@ -2963,17 +2953,7 @@ mod tests {
         let Ok(Some((rs, swapped))) = regions::<K>(p, q, &hp, &hq) else {
             return;
         };
-        let (wp, wq) = (
-            Wall {
-                vertices: p.vertices(),
-                hull: &hp,
-            },
-            Wall {
-                vertices: q.vertices(),
-                hull: &hq,
-            },
-        );
-        let (wp, wq) = if swapped { (wq, wp) } else { (wp, wq) };
+        let (wp, wq) = walls((p, &hp), (q, &hq), swapped);
         for r in rs {
             let Some(pruned) = crate::pockets::prune::<K>(&r, wp, wq) else {
                 continue;
