@@ -175,13 +175,14 @@ fn lids_of(src: &[usize], seq: &[usize], on_hull: &[bool]) -> Vec<(usize, usize)
 }
 
 /// Hull lid `(a, b)` split at the wall's vertices on it (which bound the pockets: a vertex on the
-/// lid would touch it), into the lids at least two positions apart. `O(b − a)` orientation tests.
+/// lid would touch it), into the lids at least two positions apart, appended to `out`. `O(b − a)`
+/// orientation tests.
 fn split_lid<K: Kernel>(
     ring: &[DVec2],
     seq: &[usize],
     (a, b): (usize, usize),
-) -> Vec<(usize, usize)> {
-    let mut out = Vec::new();
+    out: &mut Vec<(usize, usize)>,
+) {
     let mut prev = a;
     for t in a + 1..=b {
         if t == b || K::orient(ring[seq[a]], ring[seq[b]], ring[seq[t]]) == Orientation::Collinear {
@@ -191,7 +192,6 @@ fn split_lid<K: Kernel>(
             prev = t;
         }
     }
-    out
 }
 
 /// Which of `lids` (positions in `xs`, the wall `X′` in ring order) the other wall `ys` enters.
@@ -338,10 +338,12 @@ pub(crate) fn prune<K: Kernel>(r: &Region, p: Wall<'_>, q: Wall<'_>) -> Option<P
         let Some(hit) = entered::<K>(&r.ring, &hull, xs, &lids, ys) else {
             return Vec::new();
         };
-        lids.iter()
-            .zip(hit)
-            .filter(|&(_, h)| !h)
-            .flat_map(|(&lid, _)| split_lid::<K>(&r.ring, xs, lid))
+        let mut split = Vec::new();
+        for (&lid, _) in lids.iter().zip(hit).filter(|&(_, h)| !h) {
+            split_lid::<K>(&r.ring, xs, lid, &mut split);
+        }
+        split
+            .into_iter()
             .filter(|&(a, b)| !holds_protected(xs, a, b))
             .map(|(a, b)| (xs[a], xs[b]))
             .collect()
@@ -368,7 +370,8 @@ pub(crate) fn prune<K: Kernel>(r: &Region, p: Wall<'_>, q: Wall<'_>) -> Option<P
             tri: OnceCell::new(),
         });
     }
-    let keep: Vec<usize> = (0..n).filter(|&i| !removed[i]).collect();
+    let mut keep = Vec::with_capacity(n);
+    keep.extend((0..n).filter(|&i| !removed[i]));
     let mut index = vec![usize::MAX; n];
     for (k, &i) in keep.iter().enumerate() {
         index[i] = k;
