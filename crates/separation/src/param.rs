@@ -224,9 +224,60 @@ pub(crate) struct Edge {
     pub(crate) b: DVec2,
 }
 
+/// `16u = 2⁻⁴⁹`: [`root_pair_filter`]'s error constant.
+const ROOT_PAIR_ERR: f64 = 1.0 / 562_949_953_421_312.0;
+/// `2⁻⁴⁸⁰` and `2⁴⁸⁰`: the magnitudes [`root_pair_filter`] accepts (no overflow, and underflow
+/// only far below its slack).
+const ROOT_PAIR_LO: f64 = f64::from_bits((1023 - 480) << 52);
+const ROOT_PAIR_HI: f64 = f64::from_bits((1023 + 480) << 52);
+
+/// A static filter for the sign of `E = f(a)g(b) − f(b)g(a)` ([`RootPair`]), in plain `f64`: the
+/// value `r` and the magnitude `M = F(a)G(b) + F(b)G(a)`, where `F(p) = |t₁| + |t₂|` for the two
+/// rounded products `t₁, t₂` whose difference is `f(p)` (and `G` for `g`). `Some(sign)` when
+/// `|r| > 16u·M`, certain; `None` (the kernel decides) otherwise, or when some `F`, `G` lies outside
+/// `[2⁻⁴⁸⁰, 2⁴⁸⁰]`.
+///
+/// Why `16u` suffices (`u = 2⁻⁵³`; `docs/ROBUSTNESS.md` has the general pattern): each product of two
+/// rounded differences is within `γ₃ = (1 + u)³ − 1` of the exact one, relatively, so the rounded
+/// `f(p)` is within `α·F(p)`, `α = (γ₃/(1 − γ₃) + u)/(1 − u) ≤ 4u + 20u²`, and `|f(p)| ≤ (1 + α)F(p)`
+/// (the rounded `|t₁ ± t₂|` never exceeds the rounded `|t₁| + |t₂|`). A rounded product `f(a)g(b)` is
+/// then within `(2α + α² + u)·F(a)G(b)` of the exact one, and the final difference adds
+/// `u(1 + u)·M`: in all `|r − E| ≤ (10u + 57u²)·M`. The computed `M` is at least `(1 − 2u)` of the
+/// exact one, so `16u·M̂` exceeds the error. Underflow: every `F`, `G` is at least `2⁻⁴⁸⁰`, so `M` is
+/// at least `2⁻⁹⁶⁰` and the at most few absolute errors of `2⁻¹⁰⁷⁴` from an underflowing product are
+/// below `2⁻⁵⁹⁰·M`, inside the slack `(16u(1 − 2u) − 10.1u)·M`. Overflow: every magnitude is at most
+/// `2⁴⁸⁰`, so no product exceeds `2⁹⁶¹`; a non-finite `F` fails the range test.
+#[inline]
+fn root_pair_filter(a: DVec2, b: DVec2, f: &Affine, g: &Affine) -> Option<Sign> {
+    let form = |p: DVec2, h: &Affine| {
+        let (dx, dy) = (p.x - h.c.x, p.y - h.c.y);
+        let (ex, ey) = (h.v1.x - h.v0.x, h.v1.y - h.v0.y);
+        let (t1, t2) = if h.cross {
+            (dx * ey, dy * ex)
+        } else {
+            (dx * ex, -(dy * ey))
+        };
+        (t1 - t2, t1.abs() + t2.abs())
+    };
+    let ((fa, fam), (fb, fbm)) = (form(a, f), form(b, f));
+    let ((ga, gam), (gb, gbm)) = (form(a, g), form(b, g));
+    let ok = |m: f64| (ROOT_PAIR_LO..=ROOT_PAIR_HI).contains(&m);
+    if !(ok(fam) && ok(fbm) && ok(gam) && ok(gbm)) {
+        return None;
+    }
+    let r = fa * gb - fb * ga;
+    let m = fam * gbm + fbm * gam;
+    (r.abs() > ROOT_PAIR_ERR * m).then(|| Sign::of_f64(r))
+}
+
 impl Edge {
-    /// `sign(f(a)g(b) − f(b)g(a))` (raw forms).
+    /// `sign(f(a)g(b) − f(b)g(a))` (raw forms). Under the exact kernels [`root_pair_filter`] first.
     fn root_pair<K: Kernel>(&self, f: &Affine, g: &Affine) -> Sign {
+        if K::EXACT_DECISIONS {
+            if let Some(s) = root_pair_filter(self.a, self.b, f, g) {
+                return s;
+            }
+        }
         let x: [f64; 16] = flat(&[self.a, self.b, f.c, f.v0, f.v1, g.c, g.v0, g.v1]);
         K::sign(
             &RootPair {
@@ -479,5 +530,64 @@ impl Edge {
             Param::Root(f) => f.raw_at::<K>(if at_end { self.b } else { self.a }) == Sign::Zero,
             Param::Clip { .. } => false,
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use polydist_oracle::SplitMix64;
+    use polydist_polygon::predicates::Exact;
+
+    /// The static filter of [`RootPair`] never disagrees with the exact sign, and certifies most
+    /// calls: on random forms over points of every scale, on lattice points (exact zeros and near
+    /// ties galore) and on points one ulp off a lattice.
+    #[test]
+    fn root_pair_filter_agrees_with_the_exact_sign() {
+        let mut rng = SplitMix64::new(0x2007_f11e);
+        let (mut certified, mut calls, mut zeros) = (0, 0, 0);
+        for round in 0..60_000 {
+            let class = round % 3;
+            let scale = 2f64.powi(rng.index(80) as i32 - 40);
+            let mut pt = || match class {
+                0 => DVec2::new(rng.unit_f64() - 0.5, rng.unit_f64() - 0.5) * scale,
+                1 => DVec2::new(rng.index(7) as f64, rng.index(7) as f64) * scale,
+                _ => {
+                    let v = DVec2::new(rng.index(7) as f64, rng.index(7) as f64) * scale;
+                    DVec2::new(v.x.next_up(), v.y)
+                }
+            };
+            let (a, b) = (pt(), pt());
+            let f = Affine {
+                cross: round % 2 == 0,
+                c: pt(),
+                v0: pt(),
+                v1: pt(),
+                neg: false,
+            };
+            let g = Affine {
+                cross: round % 5 < 2,
+                c: pt(),
+                v0: pt(),
+                v1: pt(),
+                neg: false,
+            };
+            let x: [f64; 16] = flat(&[a, b, f.c, f.v0, f.v1, g.c, g.v0, g.v1]);
+            let exact = Exact::sign(
+                &RootPair {
+                    f_cross: f.cross,
+                    g_cross: g.cross,
+                },
+                &x,
+            );
+            calls += 1;
+            zeros += usize::from(exact == Sign::Zero);
+            if let Some(s) = root_pair_filter(a, b, &f, &g) {
+                certified += 1;
+                assert_eq!(s, exact, "a {a:?} b {b:?} f {f:?} g {g:?}");
+            }
+        }
+        assert!(zeros > 1_000, "{zeros} exact zeros");
+        assert!(certified * 2 > calls, "{certified} of {calls} certified");
     }
 }
