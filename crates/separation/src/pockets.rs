@@ -77,13 +77,13 @@ struct Pocket {
 
 /// The region with its unentered pockets cut off, and how to read the reduced region's answers
 /// on the full ring.
-pub(crate) struct Pruned {
+pub(crate) struct Pruned<'a> {
     /// The reduced region (same `P`, `Q`, `pb`, `top`, share; indices of the reduced ring).
     pub(crate) region: Region,
     /// The full ring index of each reduced ring vertex (increasing).
     pub(crate) keep: Vec<usize>,
-    /// The full ring.
-    full: Vec<DVec2>,
+    /// The full ring (the region's own, borrowed).
+    full: &'a [DVec2],
     /// The pocket behind each reduced ring edge that is a lid.
     lid: Vec<Option<u32>>,
     pockets: Vec<Pocket>,
@@ -309,7 +309,7 @@ fn entered<K: Kernel>(
 
 /// The region's unentered pockets, cut off. `None` when there is none (or the region is one this
 /// does not prune; see the module documentation). `p` and `q` are the region's `P` and `Q`.
-pub(crate) fn prune<K: Kernel>(r: &Region, p: Wall<'_>, q: Wall<'_>) -> Option<Pruned> {
+pub(crate) fn prune<'a, K: Kernel>(r: &'a Region, p: Wall<'_>, q: Wall<'_>) -> Option<Pruned<'a>> {
     let n = r.ring.len();
     let sp: Vec<usize> = (r.pt()..n).chain(core::iter::once(0)).collect();
     let sq: Vec<usize> = (1..=r.qt).collect();
@@ -357,21 +357,22 @@ pub(crate) fn prune<K: Kernel>(r: &Region, p: Wall<'_>, q: Wall<'_>) -> Option<P
     }
     // `(lo, hi)` full ring indices, `hi` after `lo` in ring order (`hi = 0` for the last of `P`).
     cut.sort_unstable();
-    let mut removed = vec![false; n];
+    // The stretches are disjoint (consecutive ones of a wall share an end): the kept positions are
+    // read between them.
     let mut pockets = Vec::with_capacity(cut.len());
+    let mut keep = Vec::with_capacity(n);
+    let mut next = 0;
     for &(lo, hi) in &cut {
         let end = if hi == 0 { n } else { hi };
-        for x in &mut removed[lo + 1..end] {
-            *x = true;
-        }
+        keep.extend(next..=lo);
+        next = end;
         pockets.push(Pocket {
             lo,
             len: end - lo + 1,
             tri: OnceCell::new(),
         });
     }
-    let mut keep = Vec::with_capacity(n);
-    keep.extend((0..n).filter(|&i| !removed[i]));
+    keep.extend(next..n);
     let mut index = vec![usize::MAX; n];
     for (k, &i) in keep.iter().enumerate() {
         index[i] = k;
@@ -395,13 +396,18 @@ pub(crate) fn prune<K: Kernel>(r: &Region, p: Wall<'_>, q: Wall<'_>) -> Option<P
     Some(Pruned {
         region,
         keep,
-        full: r.ring.clone(),
+        full: &r.ring,
         lid,
         pockets,
     })
 }
 
-impl Pruned {
+impl Pruned<'_> {
+    /// The number of vertices of the full ring.
+    pub(crate) fn full_len(&self) -> usize {
+        self.full.len()
+    }
+
     /// The pocket `id`'s ring and triangulation (built on first use; `None` if it failed).
     fn pocket_for<K: Kernel>(&self, id: usize) -> Option<(&[DVec2], &Triangulation)> {
         let pk = &self.pockets[id];

@@ -1049,18 +1049,19 @@ fn build_region_pruned<K: Kernel>(
     let Some(pruned) = crate::pockets::prune::<K>(&region, p, q) else {
         return build_region::<K>(region, cache);
     };
-    match pruned_runs::<K>(&pruned, region.ring.len(), cache) {
+    match pruned_runs::<K>(&pruned, cache) {
         Some(runs) => Ok(finish::<K>(region, runs)),
         None => build_region::<K>(region, cache),
     }
 }
 
-/// Steps 3–4 on the reduced region, the runs and their ends read on the full ring (of `n`
-/// vertices); `None` when the reduced region fails or the pocket walks exceed their budget.
-fn pruned_runs<K: Kernel>(pruned: &Pruned, n: usize, cache: &mut Halves) -> Option<Vec<Seg>> {
+/// Steps 3–4 on the reduced region, the runs and their ends read on the full ring; `None` when the
+/// reduced region fails or the pocket walks exceed their budget (`8N + 64` steps, `N` the full
+/// ring's size).
+fn pruned_runs<K: Kernel>(pruned: &Pruned<'_>, cache: &mut Halves) -> Option<Vec<Seg>> {
     let (tri, path) = geodesic_of::<K>(&pruned.region, cache).ok()?;
     let ring = &pruned.region.ring;
-    let mut pocket_budget = 8 * n + 64;
+    let mut pocket_budget = 8 * pruned.full_len() + 64;
     runs_with_arms::<K>(
         &tri,
         ring,
@@ -2963,7 +2964,7 @@ mod tests {
                 continue;
             };
             let full = runs_with_arms::<K>(&tri, &r.ring, &path, usize::MAX, plain, |i| i).unwrap();
-            let runs = pruned_runs::<K>(&pruned, n, &mut Halves::default()).unwrap_or_else(|| {
+            let runs = pruned_runs::<K>(&pruned, &mut Halves::default()).unwrap_or_else(|| {
                 panic!(
                     "no pruned runs: P = {:?}\nQ = {:?}",
                     p.vertices(),
