@@ -606,7 +606,15 @@ fn parcels_scene_separation_against_brute_force() {
             let (qa, qb) = (point(&s["point_a"]), point(&s["point_b"]));
             assert!(close(norm(sub(qa, qb)), expect, 1e-12));
             let route = s["route"].as_str().unwrap();
-            assert!(["hull_features", "separable_chains", "separators"].contains(&route));
+            assert!(
+                [
+                    "hull_features",
+                    "monotone_sweep",
+                    "separable_chains",
+                    "separators"
+                ]
+                .contains(&route)
+            );
             separators += usize::from(route == "separators");
             frames_checked += 1;
         }

@@ -159,8 +159,10 @@ pub struct SeparationResult {
     pub feature_a: FeatureRef,
     /// The feature of `b` containing `point_b`.
     pub feature_b: FeatureRef,
-    /// How it was found: `hull_features` (the hulls' closest features lie on both boundaries) or
-    /// `separable_chains` (section 3 across a line through a hull edge).
+    /// How it was found: `hull_features` (the hulls' closest features lie on both boundaries),
+    /// `monotone_sweep` (both facing chains monotone along a line through a hull edge: the exact
+    /// windowed sweep), `separable_chains` (section 3 across that line) or `separators` (the hulls
+    /// meet: Amato's separator).
     pub route: &'static str,
 }
 

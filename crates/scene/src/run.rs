@@ -1238,6 +1238,7 @@ fn separation_frame<K: Kernel>(
                 route: match route {
                     Route::HullFeatures => "hull_features",
                     Route::SeparableChains => "separable_chains",
+                    Route::MonotoneSweep => "monotone_sweep",
                     Route::Separators => "separators",
                     Route::BruteForce => "brute_force",
                     Route::Scan => "scan",

@@ -251,8 +251,64 @@ pub(crate) fn cmp_scan<K: Kernel>(x: Dist2, y: Dist2) -> Ordering {
         if let (Some(gx), Some(gy)) = (axis_gap(x), axis_gap(y)) {
             return gx.total_cmp(&gy);
         }
+        if congruent(x, y) {
+            return Ordering::Equal;
+        }
     }
     K::cmp_dist2(x, y)
+}
+
+/// Whether two distances are certainly equal because one configuration is the other moved by a
+/// symmetry of the square lattice (a translation, then a signed permutation of the axes): both are
+/// the same form, their difference vectors (`p − q`; or `v − a` and `b − a`, or for the second
+/// distance also `v − b` and `a − b`, the segment read from its other end) are computed without
+/// rounding, and one signed permutation maps the first's vectors onto the second's. A signed
+/// permutation is an isometry, so the two distances are the same real number. Repeated shapes
+/// (saw-teeth, comb teeth, any pattern copied along the axes) tie this way at every copy, and each
+/// tie would otherwise pay the kernel's exact stage (about 870 instructions under Robust).
+fn congruent(x: Dist2, y: Dist2) -> bool {
+    let diff = |a: DVec2, b: DVec2| Some(DVec2::new(exact_diff(a.x, b.x)?, exact_diff(a.y, b.y)?));
+    // The eight signed permutations: swap the axes (bit 2), then negate x (bit 0) and y (bit 1).
+    let maps = |d: [DVec2; 2], e: [DVec2; 2]| {
+        (0..8).any(|s| {
+            let t = |v: DVec2| {
+                let v = if s & 4 != 0 { DVec2::new(v.y, v.x) } else { v };
+                DVec2::new(
+                    if s & 1 != 0 { -v.x } else { v.x },
+                    if s & 2 != 0 { -v.y } else { v.y },
+                )
+            };
+            t(d[0]) == e[0] && t(d[1]) == e[1]
+        })
+    };
+    // The vectors from the first and from the second end of the segment (the same distance).
+    let vectors = |d: Dist2, flip: bool| match d {
+        Dist2::PointPoint(p, q) => Some((0, [diff(p, q)?, DVec2::ZERO])),
+        Dist2::PointLine(v, a, b) | Dist2::PointSegment(v, a, b) => {
+            let (a, b) = if flip { (b, a) } else { (a, b) };
+            let form = if matches!(d, Dist2::PointLine(..)) {
+                1
+            } else {
+                2
+            };
+            Some((form, [diff(v, a)?, diff(b, a)?]))
+        }
+    };
+    let Some((fx, dx)) = vectors(x, false) else {
+        return false;
+    };
+    [false, true].into_iter().any(|flip| {
+        !(flip && fx == 0) && vectors(y, flip).is_some_and(|(fy, dy)| fx == fy && maps(dx, dy))
+    })
+}
+
+/// `x − y` when it rounds to itself (Knuth's TwoSum error of `x + (−y)` is zero). `None` otherwise.
+fn exact_diff(x: f64, y: f64) -> Option<f64> {
+    let s = x - y;
+    let yv = s - x;
+    let xv = s - yv;
+    let err = (x - xv) + (-y - yv);
+    (err == 0.0 && s.is_finite()).then_some(s)
 }
 
 /// The distance `d ≥ 0` of a [`Dist2`], exactly, when it is the difference of two coordinates
@@ -283,11 +339,7 @@ fn axis_gap(d: Dist2) -> Option<f64> {
 /// `|x − y|` when `x − y` rounds to itself (Knuth's TwoSum error of `x + (−y)` is zero; no overflow
 /// for valid coordinates, and sums are exact in the subnormal range). `None` otherwise.
 fn exact_gap(x: f64, y: f64) -> Option<f64> {
-    let s = x - y;
-    let yv = s - x;
-    let xv = s - yv;
-    let err = (x - xv) + (-y - yv);
-    (err == 0.0 && s.is_finite()).then_some(s.abs())
+    exact_diff(x, y).map(f64::abs)
 }
 
 /// `2⁻⁹⁰⁰`: below it [`bounds`] gives up (no underflow reasoning near the subnormal range).
@@ -594,6 +646,106 @@ fn scan_pruned_best<K: Kernel>(
     (best, best_b.1)
 }
 
+/// [`scan`] (`interior_only`) over lateral windows, for two chains whose vertices come in
+/// non-decreasing order of an exact key `t` (the monotone sweep, `monotone.rs`): `tp` and `tq` hold
+/// approximations `t̂` of the keys, and `width(U²)` a window `W` such that a vertex pair or vertex
+/// and edge whose computed key gap `fl(t̂_y − t̂_x)` exceeds `W` is certainly farther apart than
+/// `U` (the caller's error analysis). `U²` is the current best candidate's squared-distance upper
+/// bound, so a skipped candidate certainly loses.
+///
+/// A first pass takes each `P` vertex against the `Q` vertices next to it in key order, so the
+/// windows start narrow; then each `P` vertex against the `Q` vertices and edges in its window, and
+/// each `Q` vertex against the `P` edges in its window. The window's ends only move forward:
+/// vertices left behind were certainly out of an earlier, wider window of a smaller key, so of this
+/// one too (exact keys are sorted); the first vertex certainly beyond the right end has every
+/// later one beyond it.
+///
+/// The answer is the nearest pair of the chains (ties to the first found), or `None` once more
+/// than `budget` candidates have been tried: the count is what the caller bounds the work by.
+///
+/// # Complexity
+/// `O(n_p + n_q + budget)` bounds and exact tests.
+pub(crate) fn scan_windowed<K: Kernel>(
+    p: &[DVec2],
+    q: &[DVec2],
+    tp: &[f64],
+    tq: &[f64],
+    width: impl Fn(f64) -> f64,
+    budget: usize,
+) -> Option<(Winner, usize)> {
+    let (np, nq) = (p.len(), q.len());
+    if np == 0 || nq == 0 || tp.len() != np || tq.len() != nq {
+        return None;
+    }
+    let mut best = Cand::Vv(0, 0);
+    let mut best_d = best.scan_dist(p, q, true);
+    let mut best_b = best.scan_bounds(p, q, true);
+    let mut tried = 0usize;
+    let consider = |c: Cand, best: &mut Cand, best_d: &mut Dist2, best_b: &mut (f64, f64)| {
+        let b = c.scan_bounds(p, q, true);
+        if b.0 > best_b.1 || !admitted::<K>(c, p, q, true) {
+            return;
+        }
+        let d = c.scan_dist(p, q, true);
+        if b.1 < best_b.0 || cmp_scan::<K>(d, *best_d) == Ordering::Less {
+            *best = c;
+            *best_d = d;
+            *best_b = b;
+        }
+    };
+    // The neighbours in key order.
+    let mut j = 0;
+    for (i, &ti) in tp.iter().enumerate() {
+        while j + 1 < nq && tq[j + 1] <= ti {
+            j += 1;
+        }
+        for k in j..(j + 2).min(nq) {
+            consider(Cand::Vv(i, k), &mut best, &mut best_d, &mut best_b);
+        }
+    }
+    tried += 2 * np;
+    // `P` vertices against `Q` vertices and edges, then `Q` vertices against `P` edges.
+    for pass in 0..2 {
+        let (ys, tx, ty) = if pass == 0 {
+            (nq, tp, tq)
+        } else {
+            (np, tq, tp)
+        };
+        let (mut lo, mut hi) = (0usize, 0usize);
+        for (x, &t) in tx.iter().enumerate() {
+            let w = width(best_b.1);
+            while lo < ys && t - ty[lo] > w {
+                lo += 1;
+            }
+            hi = hi.max(lo);
+            while hi < ys && t - ty[hi] >= -w {
+                hi += 1;
+            }
+            // Edges `lo − 1 .. hi` (edge `k` joins `k` and `k + 1`): the one before `lo` ends
+            // inside or beyond the window, the one at `hi` starts beyond it.
+            let edges = lo.saturating_sub(1)..hi.min(ys - 1);
+            tried += edges.len();
+            if pass == 0 {
+                tried += hi - lo;
+                for y in lo..hi {
+                    consider(Cand::Vv(x, y), &mut best, &mut best_d, &mut best_b);
+                }
+                for e in edges {
+                    consider(Cand::PvQe(x, e), &mut best, &mut best_d, &mut best_b);
+                }
+            } else {
+                for e in edges {
+                    consider(Cand::QvPe(x, e), &mut best, &mut best_d, &mut best_b);
+                }
+            }
+            if tried > budget {
+                return None;
+            }
+        }
+    }
+    Some((best.winner(p, q), tried))
+}
+
 /// Whether the squared distance from `v` to the line through `a` and `c` is certainly greater than
 /// `cut` ([`bounds`]' lower bound of it is).
 pub(crate) fn farther_from_line_than(v: DVec2, a: DVec2, c: DVec2, cut: f64) -> bool {
@@ -894,5 +1046,61 @@ mod tests {
         assert_eq!(exact_gap(1.0, 1e-20), None);
         assert_eq!(exact_gap(5.0, 4.875), Some(0.125));
         assert_eq!(exact_gap(-0.0, 0.0), Some(0.0));
+    }
+
+    /// `congruent` claims a tie only where the exact kernel finds one: configurations moved by a
+    /// translation and a signed permutation (the same one for both of a segment distance's vectors,
+    /// the segment read from either end), decoys whose two vectors are moved by different maps or
+    /// nudged by an ulp, and far-from-origin points whose differences round.
+    #[test]
+    fn congruent_distances_tie_as_the_exact_kernel() {
+        let mut rng = SplitMix64::new(0xc06e);
+        let (mut claimed, mut images) = (0, 0);
+        let map = |s: u64, v: DVec2| {
+            let v = if s & 4 != 0 { DVec2::new(v.y, v.x) } else { v };
+            DVec2::new(
+                if s & 1 != 0 { -v.x } else { v.x },
+                if s & 2 != 0 { -v.y } else { v.y },
+            )
+        };
+        for round in 0..30_000 {
+            let class = [1, 1, 0, 4][round % 4];
+            let (v, a, b) = (
+                point(&mut rng, class),
+                point(&mut rng, class),
+                point(&mut rng, class),
+            );
+            let form = rng.below(3);
+            let dist = |v: DVec2, a: DVec2, b: DVec2| match form {
+                0 => Dist2::PointPoint(v, a),
+                1 => Dist2::PointLine(v, a, b),
+                _ => Dist2::PointSegment(v, a, b),
+            };
+            let x = dist(v, a, b);
+            // The image: `a` moved by a lattice translation, `v − a` and `b − a` by a map each
+            // (the same one unless this is a decoy), then possibly an ulp off, the ends swapped.
+            let t = DVec2::new(rng.range_i64(-8, 9) as f64, rng.range_i64(-8, 9) as f64);
+            let (s1, s2) = (rng.below(8), rng.below(8));
+            let s2 = if rng.below(4) == 0 { s2 } else { s1 };
+            let a2 = a + t;
+            let mut v2 = a2 + map(s1, v - a);
+            let b2 = a2 + map(s2, b - a);
+            if rng.below(5) == 0 {
+                v2.x = f64::from_bits(v2.x.to_bits() + 1);
+            }
+            let y = if rng.coin() {
+                dist(v2, a2, b2)
+            } else {
+                dist(v2, b2, a2)
+            };
+            images += usize::from(s1 == s2);
+            let exact = Exact::cmp_dist2(x, y);
+            if congruent(x, y) {
+                claimed += 1;
+                assert_eq!(exact, Ordering::Equal, "{x:?} vs {y:?}");
+            }
+            assert_eq!(cmp_scan::<Robust>(x, y), exact, "{x:?} vs {y:?}");
+        }
+        assert!(claimed > 8_000, "{claimed} of {images} images claimed");
     }
 }

@@ -16,7 +16,7 @@
 //!     panic!("the lots are disjoint");
 //! };
 //! assert_eq!(pair.distance, 10.0);
-//! assert!(matches!(route, Route::HullFeatures | Route::SeparableChains));
+//! assert!(matches!(route, Route::HullFeatures | Route::MonotoneSweep | Route::SeparableChains));
 //! # Ok::<(), polydist_polygon::PolygonError>(())
 //! ```
 //!
@@ -32,6 +32,7 @@
 //! | [`CvvMatrix`], [`CveMatrix`], [`MatrixEntry`], [`EdgeEntry`], [`compare_entries`], [`compare_edge_entries`] | the matrices `M` themselves, for verification with `monotone_minima::check_totally_monotone_by` | done |
 //! | [`closest_visible_vertices_brute`], [`separation_brute`], [`perpendicular_envelope_brute`] | brute-force twins (test references, benchmark baselines) | done |
 //! | [`separation`], [`separation_of_disjoint`], [`intersection`], [`polygon_separation_brute`] | whole simple polygons: the exact intersection check (`O(N log N)`, only when the hulls meet), the disjoint-hull route (hull features, or section 3 on both boundaries across a line through a hull edge) | done for disjoint hulls |
+//! | [`Route::MonotoneSweep`] (inside [`separation`], [`separation_of_disjoint`], [`polyline_to_polygon`]) | our addition before section 3 on the disjoint-hull route: when both facing chains are monotone along the separating line, an exact windowed scan answers within `16N + 1024` candidates; [`separation_of_disjoint_with`] with [`HullRouteMethod::Section3`] skips it | done; `O(N)`, section 3 when it declines (`docs/algorithms/separation-polygons.md`, "The monotone sweep") |
 //! | [`Route::Separators`] (inside [`separation`]) | section 2's separator `S(P, Q)` when the hulls meet: facing chains, the pockets of each wall that the other never enters cut off, the reduced region's triangulation, the geodesic, two-sided extensions, greedy pruning, report 001's subchains, then `σ(P_i, Q_i)` | done for the non-containing case, the pinched channel and the containing case (two passes over the annulus cut open, at its top and at its bottom, sharing their triangulated halves, each answering for the pairs whose `Q` point lies on its side of `P`'s top level), checked against properties (i)–(iv), (v) for vertices, monotone cuts and Lemma 1 (for every vertex–vertex sight on small cases) by an `O(N²)` checker; each subproblem goes to section 3 across its line (crossing end edges peeled, or at most 4 runs and 8 crossing edges per chain), otherwise it is scanned (`O(|P_i||Q_i|)`); end edges deeper than the best answer so far are trimmed first and the scans skip pairs that cannot beat it |
 //! | [`triangulate`], [`shortest_path`], [`first_hit`], [`extensions`] | exact triangulation of a simple polygon with collinear vertices (`O(n log n)`), geodesics by the funnel, ray-shooting arms (one walk each, or every arm of a shortest-path tree in `O(n)`) | done (`docs/algorithms/triangulation.md`) |
 //! | [`point_to_polygon`], [`segment_to_polygon`] | a point or a segment against a simple polygon, `O(n)` | done |
@@ -72,6 +73,7 @@ mod envelope;
 mod error;
 mod frame;
 mod geodesic;
+mod monotone;
 mod param;
 mod pieces;
 mod pockets;
@@ -96,8 +98,8 @@ pub use geodesic::{
     Hit, first_hit, first_hit_brute, segment_in_polygon, shortest_path, shortest_path_brute,
 };
 pub use polygon::{
-    BoundaryPiece, Intersection, PolygonSeparation, Route, intersection, polygon_separation_brute,
-    separation, separation_of_disjoint,
+    BoundaryPiece, HullRouteMethod, Intersection, PolygonSeparation, Route, intersection,
+    polygon_separation_brute, separation, separation_of_disjoint, separation_of_disjoint_with,
 };
 pub use polyline::polyline_to_polygon;
 pub use result::{ChainSeparation, ClosestPair, Cvv, CvvStats, SeparationStats};

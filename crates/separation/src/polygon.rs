@@ -30,6 +30,7 @@ use polydist_polygon::{ConvexPolygon, Feature, Location, SimplePolygon};
 
 use crate::brute::separation_brute;
 use crate::error::{Chain, SeparationError};
+use crate::monotone::monotone_sweep;
 use crate::result::{ClosestPair, SeparationStats};
 use crate::separator;
 use crate::sigma::separation_of_chains;
@@ -74,6 +75,10 @@ pub enum Route {
     HullFeatures,
     /// Section 3 on the two boundaries, separated by a line through an edge of one hull.
     SeparableChains,
+    /// The hulls are disjoint and both facing chains are monotone along the separating line: the
+    /// exact windowed sweep answered within its linear budget (`docs/algorithms/separation-polygons.md`,
+    /// "The monotone sweep"); [`SeparationStats::sweep_candidates`] counts its candidates.
+    MonotoneSweep,
     /// The hulls meet: Amato's separator `S(P, Q)` (non-containing case), then the subproblems
     /// `σ(P_i, Q_i)`; see [`SeparationStats`] for the separator's counts.
     Separators,
@@ -213,7 +218,7 @@ pub fn separation<K: Kernel>(
     q: &SimplePolygon,
 ) -> Result<PolygonSeparation, SeparationError> {
     // Disjoint hulls contain disjoint polygons: the sweep is needed only when the hulls meet.
-    match hull_route::<K>(p, q)? {
+    match hull_route::<K>(p, q, HullRouteMethod::Auto)? {
         Ok(answer) => Ok(answer),
         Err((hp, hq)) => match intersection::<K>(p, q) {
             Some(meet) => Ok(PolygonSeparation::Intersecting(meet)),
@@ -264,7 +269,32 @@ pub fn separation_of_disjoint<K: Kernel>(
     p: &SimplePolygon,
     q: &SimplePolygon,
 ) -> Result<PolygonSeparation, SeparationError> {
-    match hull_route::<K>(p, q)? {
+    separation_of_disjoint_with::<K>(p, q, HullRouteMethod::Auto)
+}
+
+/// How the disjoint-hull route answers once the hulls have given a separating line.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum HullRouteMethod {
+    /// The monotone sweep ([`Route::MonotoneSweep`]) when both facing chains are monotone along the
+    /// line and its budget of `16N + 1024` candidates holds; section 3 otherwise.
+    #[default]
+    Auto,
+    /// Section 3 always ([`Route::SeparableChains`]): the paper's algorithm alone, for comparison.
+    Section3,
+}
+
+/// [`separation_of_disjoint`] with the disjoint-hull route's method chosen: [`HullRouteMethod::Auto`]
+/// is [`separation_of_disjoint`]; [`HullRouteMethod::Section3`] never tries the monotone sweep, so
+/// its cost can be measured apart. Pairs whose hulls meet take the separator route either way.
+///
+/// # Errors
+/// As [`separation_of_disjoint`].
+pub fn separation_of_disjoint_with<K: Kernel>(
+    p: &SimplePolygon,
+    q: &SimplePolygon,
+    method: HullRouteMethod,
+) -> Result<PolygonSeparation, SeparationError> {
+    match hull_route::<K>(p, q, method)? {
         Ok(answer) => Ok(answer),
         Err((hp, hq)) => separator_route::<K>(p, q, &hp, &hq),
     }
@@ -277,6 +307,7 @@ type HullIndices = (Vec<usize>, Vec<usize>);
 fn hull_route<K: Kernel>(
     p: &SimplePolygon,
     q: &SimplePolygon,
+    method: HullRouteMethod,
 ) -> Result<Result<PolygonSeparation, HullIndices>, SeparationError> {
     let ((hp, ip), (hq, iq)) = (
         p.convex_hull_and_indices_with::<K>(),
@@ -299,6 +330,18 @@ fn hull_route<K: Kernel>(
         }));
     }
     let (a, b) = separating_edge::<K>(&hp, fp, &hq, fq).ok_or(SeparationError::Inconsistent)?;
+    if method == HullRouteMethod::Auto {
+        if let Some(s) = monotone_sweep::<K>(p, q, a, b) {
+            return Ok(Ok(PolygonSeparation::Separated {
+                pair: to_caller::<K>(p, q, s.pair),
+                route: Route::MonotoneSweep,
+                stats: SeparationStats {
+                    sweep_candidates: s.tried,
+                    ..SeparationStats::default()
+                },
+            }));
+        }
+    }
     let (cp, cq) = (closed_chain(p), closed_chain(q));
     let s = separation_of_chains::<K>(&cp, &cq, a, b)?;
     Ok(Ok(PolygonSeparation::Separated {

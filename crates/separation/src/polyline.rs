@@ -8,6 +8,7 @@ use polydist_polygon::predicates::Kernel;
 use polydist_polygon::{Feature, PolygonError, SimplePolygon, convex_hull_with};
 
 use crate::error::{Chain, SeparationError};
+use crate::monotone::monotone_sweep_polyline;
 use crate::polygon::{
     PolygonSeparation, Route, caller_feature, closed_chain, hull_pair, separating_edge,
 };
@@ -22,7 +23,9 @@ use crate::simple_distance::segment_to_polygon;
 /// `CH(Q)` by Melkman's), their distance and closest features by the convex crate's `O(log N)`
 /// search. When those features are a vertex of `CH(T)` (a vertex of `T`) and a feature of `CH(Q)`
 /// on `Q`'s boundary (not a lid), that pair is the answer ([`Route::HullFeatures`]); otherwise a
-/// separating line through an edge of one hull at those features, then section 3
+/// separating line through an edge of one hull at those features; then, when `T` is monotone along
+/// that line and so is `Q`'s facing chain, the exact windowed sweep ([`Route::MonotoneSweep`],
+/// `docs/algorithms/separation-polygons.md`, "The monotone sweep"), otherwise section 3
 /// ([`separation_of_chains`](crate::separation_of_chains)) on `T` (open) and `Q`'s boundary
 /// (closed). Disjoint hulls hold disjoint sets, so no intersection check is needed.
 ///
@@ -114,6 +117,19 @@ pub fn polyline_to_polygon<K: Kernel>(
         });
     }
     let (a, b) = separating_edge::<K>(&ht, ft, &hq, fq).ok_or(SeparationError::Inconsistent)?;
+    if let Some(s) = monotone_sweep_polyline::<K>(t, q, a, b) {
+        return Ok(PolygonSeparation::Separated {
+            pair: ClosestPair {
+                feature_q: caller_feature::<K>(q, s.pair.feature_q, s.pair.point_p),
+                ..s.pair
+            },
+            route: Route::MonotoneSweep,
+            stats: SeparationStats {
+                sweep_candidates: s.tried,
+                ..SeparationStats::default()
+            },
+        });
+    }
     let s = separation_of_chains::<K>(t, &closed_chain(q), a, b)?;
     Ok(PolygonSeparation::Separated {
         pair: ClosestPair {

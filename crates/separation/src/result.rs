@@ -71,6 +71,9 @@ pub struct SeparationStats {
     /// Separator route only: cuts not found where the construction puts them (0 under the exact
     /// kernels in every test); the subchain then runs to the end of its wall, which is still sound.
     pub cut_fallbacks: usize,
+    /// [`Route::MonotoneSweep`](crate::Route::MonotoneSweep) only: the candidate pairs the sweep
+    /// tried (at most `16N + 1024`).
+    pub sweep_candidates: usize,
 }
 
 /// The separation of two chains, a realizing pair, and the work done.

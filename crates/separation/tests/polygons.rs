@@ -373,7 +373,7 @@ fn check_polyline<K: Kernel>(
         Ok(PolygonSeparation::Separated { pair, route, .. }) => {
             prop_assert!(matches!(
                 route,
-                Route::SeparableChains | Route::HullFeatures | Route::Scan
+                Route::SeparableChains | Route::MonotoneSweep | Route::HullFeatures | Route::Scan
             ));
             let exact = chain_distance(t, &closed);
             check_optimal(&exact, &pair)?;
@@ -402,7 +402,7 @@ fn check_polyline<K: Kernel>(
 
 #[test]
 fn polylines_against_polygons() {
-    let (mut hull, mut chains, mut refused) = (0, 0, 0);
+    let (mut hull, mut chains, mut swept, mut refused) = (0, 0, 0, 0);
     for seed in 0..400 {
         let (t, q, touching) = polyline_case(seed);
         let got = check_polyline::<Robust>(&t, &q, touching)
@@ -410,6 +410,7 @@ fn polylines_against_polygons() {
         check_polyline::<Exact>(&t, &q, touching).unwrap_or_else(|e| panic!("seed {seed}: {e}"));
         match got {
             Some(Route::HullFeatures) => hull += 1,
+            Some(Route::MonotoneSweep) => swept += 1,
             Some(_) => chains += 1,
             None => refused += 1,
         }
@@ -418,12 +419,83 @@ fn polylines_against_polygons() {
             let _ = polyline_to_polygon::<Fast>(&t, &sq);
         }
     }
-    // Every outcome occurs: boxes apart are answered (by the hulls' pair or by section 3), and some
-    // touching boxes have meeting hulls.
+    // Every outcome occurs: boxes apart are answered (by the hulls' pair, the monotone sweep or
+    // section 3), and some touching boxes have meeting hulls.
+    eprintln!("hull features {hull}, sweep {swept}, section 3 {chains}, refused {refused}");
     assert!(
         hull >= 50 && chains >= 50 && refused >= 10,
-        "hull features {hull}, section 3 {chains}, refused {refused}"
+        "hull features {hull}, sweep {swept}, section 3 {chains}, refused {refused}"
     );
+}
+
+/// A monotone zig-zag toolpath (`x` non-decreasing, vertical steps included, heights on a lattice
+/// of quarters) under a polygon whose bottom is another such zig-zag, `gap` above the path's top,
+/// both turned by a lattice symmetry; the polyline possibly reversed.
+fn monotone_polyline_case(seed: u64) -> (Vec<DVec2>, Vec<DVec2>) {
+    let mut rng = SplitMix64::new(seed);
+    let zigzag = |rng: &mut SplitMix64, k: usize, lo: i64, hi: i64| -> Vec<DVec2> {
+        // Never two vertical steps in a row (they could fold back over each other).
+        let (mut x, mut step) = (0.0, 1.0);
+        (0..k)
+            .map(|_| {
+                step = if step == 0.0 {
+                    1.0
+                } else {
+                    rng.below(3) as f64
+                };
+                x += step * 0.5;
+                DVec2::new(x, rng.range_i64(lo, hi) as f64 * 0.25)
+            })
+            .collect()
+    };
+    let k = 3 + rng.index(30);
+    let mut t = zigzag(&mut rng, k, 0, 5);
+    t.dedup();
+    let gap = [0.25, 1.0, 0.0078125, 3.0][rng.index(4)];
+    let m = 3 + rng.index(30);
+    let mut bottom = zigzag(&mut rng, m, 0, 5);
+    bottom.dedup();
+    // Counter-clockwise: the bottom left to right, `gap` above the path (heights 0 to 1.25), then
+    // the top right to left. (A vertical step at either end folds the ring back: refused, skipped.)
+    let (x0, x1) = (bottom[0].x, bottom[bottom.len() - 1].x);
+    let mut q: Vec<DVec2> = bottom
+        .iter()
+        .map(|v| DVec2::new(v.x, v.y + 1.25 + gap))
+        .collect();
+    q.push(DVec2::new(x1 + 1.0, 4.0 + gap));
+    q.push(DVec2::new(x0 - 1.0, 4.0 + gap));
+    let s = rng.below(8);
+    let map = |v: DVec2| {
+        let v = if s & 4 != 0 { DVec2::new(v.y, v.x) } else { v };
+        DVec2::new(
+            if s & 1 != 0 { -v.x } else { v.x },
+            if s & 2 != 0 { -v.y } else { v.y },
+        )
+    };
+    let mut t: Vec<DVec2> = t.into_iter().map(map).collect();
+    let q: Vec<DVec2> = q.into_iter().map(map).collect();
+    if rng.coin() {
+        t.reverse();
+    }
+    (t, q)
+}
+
+/// Monotone toolpaths under zig-zag polygons: the monotone sweep answers most of them, exactly
+/// optimal against the oracle under Robust and Exact (as every other route is checked).
+#[test]
+fn monotone_polylines_take_the_sweep() {
+    let (mut swept, mut other) = (0, 0);
+    for seed in 0..300 {
+        let (t, q) = monotone_polyline_case(seed);
+        match check_polyline::<Robust>(&t, &q, false).unwrap_or_else(|e| panic!("seed {seed}: {e}"))
+        {
+            Some(Route::MonotoneSweep) => swept += 1,
+            _ => other += 1,
+        }
+        check_polyline::<Exact>(&t, &q, false).unwrap_or_else(|e| panic!("seed {seed}: {e}"));
+    }
+    eprintln!("monotone sweep {swept}, other routes {other}");
+    assert!(swept >= 120, "monotone sweep {swept}, other routes {other}");
 }
 
 #[test]

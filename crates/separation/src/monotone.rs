@@ -1,0 +1,307 @@
+//! The disjoint-hull route's first try: two boundaries whose facing chains are monotone along the
+//! separating line, answered by an exact windowed sweep (`docs/algorithms/separation-polygons.md`,
+//! "The monotone sweep").
+//!
+//! When `CH(P)` and `CH(Q)` are disjoint, a line `ℓ` through `a` and `b` separates the polygons.
+//! Let `t(v) = (v − a)·(b − a)` be the position along `ℓ` and call *up* the side of `ℓ` where the
+//! other polygon lies. The *facing chain* `F` of a polygon is its boundary path between its highest
+//! vertex of least `t` and its highest vertex of greatest `t` that runs along the top: for a
+//! counter-clockwise boundary, from greatest to least `t` when up is to the left of `a → b`, the
+//! other way when it is to the right (the interior lies to the left of the direction of travel).
+//!
+//! **Why only the facing chains matter.** Suppose `F` is monotone (`t` never moves backwards along
+//! it). `F` then crosses the strip `t(P)` from side to side, so it cuts the strip in two, and the rest
+//! `B` of the boundary, which joins `F`'s ends without meeting `F` elsewhere, lies on one side of it.
+//! Interior points lie just below `F` (left of travel), and `B` bounds the interior, so it lies below
+//! `F`. A point `x` of `B` thus has a point `f` of `F` straight above it, at the same `t` and no lower.
+//! Every point `y` of the other polygon lies on the far side of `ℓ`, so no lower than `f` in the up
+//! direction, and `|f − y| ≤ |x − y|`. Hence `σ(P, Q) = σ(F_P, F_Q)`.
+//!
+//! **The sweep.** With both facing chains in order of `t`, a pair of points can only beat the best
+//! candidate `U` found so far if their `t` differ by at most `U·|b − a|`; [`scan_windowed`] tries
+//! each vertex against the other chain's vertices and edges in that window only, with the exact
+//! comparisons of the scans (`f64` bounds first, the kernel on overlap). The keys are `f64`
+//! approximations with a proven error bound ([`keys`]); the window is widened by it, so nothing a
+//! skipped pair could win is lost.
+//!
+//! **Linear, or section 3.** The sweep gives up after `16·(|F_P| + |F_Q|) + 1024` candidates
+//! (inputs whose windows are crowded: dense vertices along the line within the clearance), and when
+//! a facing chain is not monotone: section 3 then answers, so the route stays `O(N)`. On saw-teeth
+//! facing each other the windows hold two or three candidates a vertex.
+
+use glam::DVec2;
+use polydist_polygon::predicates::{Kernel, Orientation, Sign};
+use polydist_polygon::{Feature, SimplePolygon};
+
+use crate::brute::scan_windowed;
+use crate::result::ClosestPair;
+
+/// The monotone sweep's answer: the pair, with internal features of `P` and `Q` (edge `e` joins
+/// internal vertices `e` and `e + 1 mod n`), and the candidates tried.
+pub(crate) struct Swept {
+    pub(crate) pair: ClosestPair,
+    pub(crate) tried: usize,
+}
+
+/// σ(P, Q) by the monotone sweep, for polygons on opposite closed sides of the line through `a`
+/// and `b` (`a ≠ b`); `None` when a facing chain is not monotone along the line, when the keys
+/// overflow, or when the budget runs out.
+///
+/// # Complexity
+/// `O(N)`: `O(N)` exact degree-2 signs for the extreme vertices and the monotonicity test, `O(N)`
+/// for the keys, and at most `16N + 1024` candidates.
+pub(crate) fn monotone_sweep<K: Kernel>(
+    p: &SimplePolygon,
+    q: &SimplePolygon,
+    a: DVec2,
+    b: DVec2,
+) -> Option<Swept> {
+    let (vp, vq) = (p.vertices(), q.vertices());
+    let q_left = left_of::<K>(vq, a, b)?;
+    let ip = facing::<K>(vp, a, b, q_left)?;
+    let iq = facing::<K>(vq, a, b, !q_left)?;
+    sweep::<K>((vp, &ip, vp.len()), (vq, &iq, vq.len()), a, b)
+}
+
+/// [`monotone_sweep`] for an open polyline `t` (no repeated consecutive vertices; edge `i` joins
+/// vertices `i` and `i + 1`) against the polygon `q`, on opposite closed sides of the line through
+/// `a` and `b`. An open chain bounds no interior, so the whole of `t` must be monotone along the
+/// line (either way); `q` contributes its facing chain. `None` when either is not monotone, when
+/// `t` repeats a vertex, or as [`monotone_sweep`].
+pub(crate) fn monotone_sweep_polyline<K: Kernel>(
+    t: &[DVec2],
+    q: &SimplePolygon,
+    a: DVec2,
+    b: DVec2,
+) -> Option<Swept> {
+    let vq = q.vertices();
+    let q_left = left_of::<K>(vq, a, b)?;
+    let iq = facing::<K>(vq, a, b, !q_left)?;
+    if t.len() < 2 || t.windows(2).any(|w| w[0] == w[1]) {
+        return None;
+    }
+    let along = |s: Sign| t.windows(2).all(|w| K::dot_sign(w[0], w[1], a, b) != s);
+    let it: Vec<usize> = if along(Sign::Negative) {
+        (0..t.len()).collect()
+    } else if along(Sign::Positive) {
+        (0..t.len()).rev().collect()
+    } else {
+        return None;
+    };
+    // No ring: an index past the end never wraps, so edge `k` is named by its lower end.
+    sweep::<K>((t, &it, t.len() + 1), (vq, &iq, vq.len()), a, b)
+}
+
+/// Whether the ring `v` lies left of `a → b` (the sign of a vertex off the line; a simple polygon
+/// has one).
+fn left_of<K: Kernel>(v: &[DVec2], a: DVec2, b: DVec2) -> Option<bool> {
+    let o = v
+        .iter()
+        .map(|&x| K::orient(a, b, x))
+        .find(|&o| o != Orientation::Collinear)?;
+    Some(o == Orientation::CounterClockwise)
+}
+
+/// A chain for the sweep: the points, the indices of its vertices in non-decreasing order of `t`,
+/// and the ring length that names its edges ([`internal`]).
+type Listed<'a> = (&'a [DVec2], &'a [usize], usize);
+
+/// The windowed scan of two listed chains, features mapped back to the points' indices.
+fn sweep<K: Kernel>(
+    (vp, ip, np): Listed<'_>,
+    (vq, iq, nq): Listed<'_>,
+    a: DVec2,
+    b: DVec2,
+) -> Option<Swept> {
+    let fp: Vec<DVec2> = ip.iter().map(|&i| vp[i]).collect();
+    let fq: Vec<DVec2> = iq.iter().map(|&i| vq[i]).collect();
+    let (tp, tq, slack) = keys(&fp, &fq, a, b)?;
+    let u = b - a;
+    let len = (u.x * u.x + u.y * u.y).sqrt();
+    if !len.is_finite() {
+        return None;
+    }
+    let width = |u2: f64| window(u2, len, slack);
+    let budget = 16 * (fp.len() + fq.len()) + 1024;
+    let (winner, tried) = scan_windowed::<K>(&fp, &fq, &tp, &tq, width, budget)?;
+    let mut pair = winner.pair();
+    pair.feature_p = internal(pair.feature_p, ip, np);
+    pair.feature_q = internal(pair.feature_q, iq, nq);
+    Some(Swept { pair, tried })
+}
+
+/// The window `W` for a best candidate whose squared distance is at most `u2`, with `len = fl(|û|)`
+/// and the keys' error bound `slack = E`: `fl(t̂_y − t̂_x) > W` implies `|t(y) − t(x)| > U·|b − a|`
+/// for `U = √u2`, so the pair is farther apart than the best.
+///
+/// Why. `W ≥ U·|b − a| + 2E` after every rounding: the computed `√u2·len` is within a few `u` of
+/// `U·|b − a|` (`û = fl(b − a)` is within `u` of `b − a` in each coordinate), far inside the relative
+/// `2⁻⁴⁰`; `4E` covers the two keys' errors (`2E`) and the rounding of their difference (at most
+/// `u` of it, which `fl(t̂_y − t̂_x) > W` keeps below the spare `2E` and the relative widening);
+/// `2⁻¹⁰⁰⁰` covers underflow. `∞` when `u2` is not finite.
+fn window(u2: f64, len: f64, slack: f64) -> f64 {
+    let w = u2.sqrt() * len * (1.0 + WIDEN) + 4.0 * slack + TINY;
+    if w.is_nan() { f64::INFINITY } else { w }
+}
+
+/// `2⁻⁴⁰`: the relative widening of the window, far above the few roundings of its computation.
+const WIDEN: f64 = 1.0 / 1_099_511_627_776.0;
+/// `2⁻¹⁰⁰⁰`, above any absolute error from underflow in the keys.
+const TINY: f64 = f64::from_bits((1023 - 1000) << 52);
+/// `2⁻⁵⁰ = 8u`.
+const EIGHT_U: f64 = 1.0 / 1_125_899_906_842_624.0;
+
+/// The facing chain of the counter-clockwise ring `v` (internal vertex indices, in non-decreasing
+/// order of `t`), for the other polygon to the left of `a → b` when `other_left`; `None` when it is
+/// not monotone. `O(n)` exact degree-2 signs.
+fn facing<K: Kernel>(v: &[DVec2], a: DVec2, b: DVec2, other_left: bool) -> Option<Vec<usize>> {
+    let n = v.len();
+    if n < 3 {
+        return None;
+    }
+    // `w` is nearer the other polygon than `v` (same `t`): its cross with `b − a` has the other's
+    // side's sign.
+    let toward = |from: DVec2, to: DVec2| {
+        let s = K::cross_sign(a, b, from, to);
+        if other_left {
+            s == Sign::Positive
+        } else {
+            s == Sign::Negative
+        }
+    };
+    // The extremes of `t`, ties to the vertex nearest the other polygon.
+    let (mut lo, mut hi) = (0, 0);
+    for k in 1..n {
+        match K::dot_sign(v[lo], v[k], a, b) {
+            Sign::Negative => lo = k,
+            Sign::Zero if toward(v[lo], v[k]) => lo = k,
+            _ => {}
+        }
+        match K::dot_sign(v[hi], v[k], a, b) {
+            Sign::Positive => hi = k,
+            Sign::Zero if toward(v[hi], v[k]) => hi = k,
+            _ => {}
+        }
+    }
+    if lo == hi {
+        return None;
+    }
+    // Counter-clockwise from `hi` to `lo` (up to the left) or from `lo` to `hi` (up to the right),
+    // listed in order of increasing `t`.
+    let (from, to) = if other_left { (hi, lo) } else { (lo, hi) };
+    let steps = (to + n - from) % n;
+    let mut chain: Vec<usize> = (0..=steps).map(|s| (from + s) % n).collect();
+    if other_left {
+        chain.reverse();
+    }
+    chain
+        .windows(2)
+        .all(|w| K::dot_sign(v[w[0]], v[w[1]], a, b) != Sign::Negative)
+        .then_some(chain)
+}
+
+/// The keys `t̂(v) = fl(fl(v − a)·fl(b − a))` of both chains, and `E` with `|t̂(v) − t(v)| ≤ E` for
+/// every vertex; `None` when a key or `E` is not finite.
+///
+/// Why `E` holds. With `d̂ = fl(v − a)`, `û = fl(b − a)` and the products `p̂ₓ = fl(d̂ₓûₓ)`,
+/// `p̂ᵧ = fl(d̂ᵧûᵧ)`, each product is within `(1 + u)³ − 1` relative of the exact `dₓuₓ` (three
+/// roundings), and the sum adds `u(|p̂ₓ| + |p̂ᵧ|)`. So `|t̂ − t| ≤ 4.01u·(|p̂ₓ| + |p̂ᵧ|)`, and
+/// `E = 8u·max fl(|p̂ₓ| + |p̂ᵧ|) + 2⁻¹⁰⁰⁰` is above it (the sum's own rounding is inside the factor
+/// two; a product that underflows is off by at most `2⁻¹⁰⁷⁴`).
+fn keys(fp: &[DVec2], fq: &[DVec2], a: DVec2, b: DVec2) -> Option<(Vec<f64>, Vec<f64>, f64)> {
+    let u = b - a;
+    let mut worst = 0.0f64;
+    let mut key = |v: &DVec2| {
+        let d = *v - a;
+        let (x, y) = (d.x * u.x, d.y * u.y);
+        worst = worst.max(x.abs() + y.abs());
+        x + y
+    };
+    let tp: Vec<f64> = fp.iter().map(&mut key).collect();
+    let tq: Vec<f64> = fq.iter().map(&mut key).collect();
+    let slack = EIGHT_U * worst + TINY;
+    (slack.is_finite() && tp.iter().chain(&tq).all(|t| t.is_finite())).then_some((tp, tq, slack))
+}
+
+/// The internal feature of a facing chain's local feature: vertex `k` is `chain[k]`, edge `k` the
+/// ring edge between `chain[k]` and `chain[k + 1]` (consecutive on the ring, either way round).
+fn internal(f: Feature, chain: &[usize], n: usize) -> Feature {
+    match f {
+        Feature::Vertex(k) => Feature::Vertex(chain[k]),
+        Feature::Edge(k) => {
+            let (x, y) = (chain[k], chain[k + 1]);
+            Feature::Edge(if (x + 1) % n == y { x } else { y })
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    //! The keys' error bound and the window against exact rationals.
+    use super::*;
+    use polydist_oracle::SplitMix64;
+    use polydist_predicates::exact::to_rational;
+
+    /// Points of one scale class: unit square, lattice, huge, tiny, far from the origin, mixed.
+    fn point(rng: &mut SplitMix64, class: usize) -> DVec2 {
+        let u = |rng: &mut SplitMix64| rng.unit_f64() - 0.5;
+        match class {
+            0 => DVec2::new(u(rng), u(rng)),
+            1 => DVec2::new(rng.range_i64(-8, 9) as f64, rng.range_i64(-8, 9) as f64) / 4.0,
+            2 => DVec2::new(u(rng), u(rng)) * 1e150,
+            3 => DVec2::new(u(rng), u(rng)) * 1e-280,
+            4 => DVec2::new(1e12 + u(rng), 1e12 + u(rng)),
+            _ => DVec2::new(u(rng) * 1e9, u(rng) * 1e-9),
+        }
+    }
+
+    /// Every key is within `E` of the exact `t(v)`, and a pair the window leaves out is farther
+    /// apart along the line than `U·|b − a|` (squared: `(t(y) − t(x))² > U²·|b − a|²`, exactly).
+    #[test]
+    fn keys_and_window_hold_their_bounds() {
+        let mut rng = SplitMix64::new(0x6e75);
+        let r = |x: f64| to_rational(x).expect("finite");
+        let exact_key = |v: DVec2, a: DVec2, b: DVec2| {
+            (r(v.x) - r(a.x)) * (r(b.x) - r(a.x)) + (r(v.y) - r(a.y)) * (r(b.y) - r(a.y))
+        };
+        let (mut skipped, mut kept) = (0, 0);
+        for round in 0..1_500 {
+            let class = round % 6;
+            let (a, b) = (point(&mut rng, class), point(&mut rng, class));
+            if a == b {
+                continue;
+            }
+            let fp: Vec<DVec2> = (0..4).map(|_| point(&mut rng, class)).collect();
+            let fq: Vec<DVec2> = (0..4).map(|_| point(&mut rng, class)).collect();
+            let Some((tp, tq, slack)) = keys(&fp, &fq, a, b) else {
+                panic!("finite keys for {fp:?} {fq:?} {a:?} {b:?}");
+            };
+            for (v, t) in fp.iter().zip(&tp).chain(fq.iter().zip(&tq)) {
+                let err = r(*t) - exact_key(*v, a, b);
+                assert!(err <= r(slack) && -err <= r(slack), "{v:?} {a:?} {b:?}");
+            }
+            let u = b - a;
+            let len = (u.x * u.x + u.y * u.y).sqrt();
+            let u2exact =
+                (r(b.x) - r(a.x)) * (r(b.x) - r(a.x)) + (r(b.y) - r(a.y)) * (r(b.y) - r(a.y));
+            for (x, tx) in fp.iter().zip(&tp) {
+                for (y, ty) in fq.iter().zip(&tq) {
+                    // Candidate distances: a fraction of the key gap itself, so that both answers occur.
+                    let gap = ((ty - tx) / len).abs();
+                    for f in [0.0, 0.5, 0.999_999, 1.0, 1.000_001, 2.0] {
+                        let u2 = (gap * f) * (gap * f);
+                        let w = window(u2, len, slack);
+                        if ty - tx > w || tx - ty > w {
+                            skipped += 1;
+                            let d = exact_key(*y, a, b) - exact_key(*x, a, b);
+                            assert!(d.clone() * d > r(u2) * u2exact.clone(), "{x:?} {y:?} {u2}");
+                        } else {
+                            kept += 1;
+                        }
+                    }
+                }
+            }
+        }
+        assert!(skipped > 15_000 && kept > 15_000, "{skipped} {kept}");
+    }
+}
