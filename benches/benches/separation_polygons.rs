@@ -5,8 +5,9 @@
 //! - `polygons/spirals`: two double-walled spirals side by side;
 //! - `polygons/combs`: two combs whose teeth face each other tip to tip (not interleaved);
 //! - `polygons/sawteeth`: two saw-tooth slabs facing each other, the tips of one opposite the notches
-//!   of the other: the closest hull features are lids, so section 3 runs (the others mostly end at
-//!   the hull shortcut);
+//!   of the other: the closest hull features are lids, and both facing chains are monotone along
+//!   the separating line, so the monotone sweep answers (section 3 in `query_robust_section3`; the
+//!   others mostly end at the hull shortcut);
 //! - `polygons/interlocked_combs`: two combs whose teeth interleave, clearance 1/8: the hulls meet,
 //!   so the query goes through Amato's separator (triangulation of the region between the facing
 //!   chains, geodesic, extensions, greedy pruning, subchains). Every clearance ties exactly;
@@ -29,6 +30,9 @@
 //! - `intersection`: the intersection check alone (`intersection::<Robust>`, `O(N log N)`);
 //! - `query_fast`, `query_robust`, `query_exact`: `separation_of_disjoint::<K>` (the query alone;
 //!   Exact up to 4,096);
+//! - `query_robust_section3`: the same with `HullRouteMethod::Section3`: the disjoint-hull route
+//!   without the monotone sweep (section 3 wherever the hull features do not answer), so the
+//!   sweep's gain and the paper's algorithm's own cost can be read apart;
 //! - `brute_robust`: `polygon_separation_brute::<Robust>` (`Θ(nm)`, up to 4,096);
 //! - `parry_query`: parry2d-f64 `query::distance` between two prebuilt closed `Polyline`s (BVH);
 //! - `parry_build_query`: building both polylines and the query;
@@ -55,8 +59,8 @@ use polydist_oracle::SplitMix64;
 use polydist_polygon::SimplePolygon;
 use polydist_predicates::{Exact, Fast, Kernel, Robust};
 use polydist_separation::{
-    intersection, polygon_separation_brute, polyline_to_polygon, separation_brute,
-    separation_of_disjoint,
+    HullRouteMethod, intersection, polygon_separation_brute, polyline_to_polygon, separation_brute,
+    separation_of_disjoint, separation_of_disjoint_with,
 };
 
 /// Total vertices.
@@ -194,6 +198,21 @@ fn run(c: &mut Criterion, name: &str, make: fn(usize) -> (Vec<DVec2>, Vec<DVec2>
             BenchmarkId::new("query_robust", n),
             &(&p, &q),
             |bch, (p, q)| bch.iter(|| query::<Robust>(black_box(p), black_box(q))),
+        );
+        group.bench_with_input(
+            BenchmarkId::new("query_robust_section3", n),
+            &(&p, &q),
+            |bch, (p, q)| {
+                bch.iter(|| {
+                    separation_of_disjoint_with::<Robust>(
+                        black_box(p),
+                        black_box(q),
+                        HullRouteMethod::Section3,
+                    )
+                    .expect("disjoint polygons")
+                    .distance()
+                })
+            },
         );
         if n <= SMALL_MAX {
             group.bench_with_input(
