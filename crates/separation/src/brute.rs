@@ -268,38 +268,34 @@ pub(crate) fn cmp_scan<K: Kernel>(x: Dist2, y: Dist2) -> Ordering {
 /// tie would otherwise pay the kernel's exact stage (about 870 instructions under Robust).
 fn congruent(x: Dist2, y: Dist2) -> bool {
     let diff = |a: DVec2, b: DVec2| Some(DVec2::new(exact_diff(a.x, b.x)?, exact_diff(a.y, b.y)?));
-    // The eight signed permutations: swap the axes (bit 2), then negate x (bit 0) and y (bit 1).
+    // Some signed permutation maps `d[0]` to `e[0]` and `d[1]` to `e[1]`: each axis of `e` is one
+    // axis of `d` (both vectors' components), times one sign for both vectors. The eight maps in
+    // two tests: the axes kept, or swapped.
     let maps = |d: [DVec2; 2], e: [DVec2; 2]| {
-        (0..8).any(|s| {
-            let t = |v: DVec2| {
-                let v = if s & 4 != 0 { DVec2::new(v.y, v.x) } else { v };
-                DVec2::new(
-                    if s & 1 != 0 { -v.x } else { v.x },
-                    if s & 2 != 0 { -v.y } else { v.y },
-                )
-            };
-            t(d[0]) == e[0] && t(d[1]) == e[1]
-        })
+        let axis =
+            |d0: f64, d1: f64, e0: f64, e1: f64| (e0 == d0 && e1 == d1) || (e0 == -d0 && e1 == -d1);
+        (axis(d[0].x, d[1].x, e[0].x, e[1].x) && axis(d[0].y, d[1].y, e[0].y, e[1].y))
+            || (axis(d[0].y, d[1].y, e[0].x, e[1].x) && axis(d[0].x, d[1].x, e[0].y, e[1].y))
     };
-    // The vectors from the first and from the second end of the segment (the same distance).
-    let vectors = |d: Dist2, flip: bool| match d {
-        Dist2::PointPoint(p, q) => Some((0, [diff(p, q)?, DVec2::ZERO])),
-        Dist2::PointLine(v, a, b) | Dist2::PointSegment(v, a, b) => {
-            let (a, b) = if flip { (b, a) } else { (a, b) };
-            let form = if matches!(d, Dist2::PointLine(..)) {
-                1
-            } else {
-                2
+    match (x, y) {
+        (Dist2::PointPoint(p, q), Dist2::PointPoint(r, s)) => {
+            let (Some(d), Some(e)) = (diff(p, q), diff(r, s)) else {
+                return false;
             };
-            Some((form, [diff(v, a)?, diff(b, a)?]))
+            maps([d, DVec2::ZERO], [e, DVec2::ZERO])
         }
-    };
-    let Some((fx, dx)) = vectors(x, false) else {
-        return false;
-    };
-    [false, true].into_iter().any(|flip| {
-        !(flip && fx == 0) && vectors(y, flip).is_some_and(|(fy, dy)| fx == fy && maps(dx, dy))
-    })
+        (Dist2::PointLine(v, a, b), Dist2::PointLine(w, c, e))
+        | (Dist2::PointSegment(v, a, b), Dist2::PointSegment(w, c, e)) => {
+            let (Some(d0), Some(d1), Some(e0), Some(e1)) =
+                (diff(v, a), diff(b, a), diff(w, c), diff(e, c))
+            else {
+                return false;
+            };
+            // The second segment read from either end: `w − e` and `c − e = −(e − c)`.
+            maps([d0, d1], [e0, e1]) || diff(w, e).is_some_and(|f0| maps([d0, d1], [f0, -e1]))
+        }
+        _ => false,
+    }
 }
 
 /// `x − y` when it rounds to itself (Knuth's TwoSum error of `x + (−y)` is zero). `None` otherwise.
