@@ -65,8 +65,9 @@ pub struct SeparationStats {
     pub subproblem_vertices: usize,
     /// Separator route only: subproblems solved by section 3 across the line of `l_i`.
     pub subproblems_section3: usize,
-    /// Separator route only: subproblems scanned exactly in `O(|P_i| · |Q_i|)` because the line of
-    /// `l_i` touches both subchains (section 3 for such lines is not built).
+    /// Separator route only: subproblems scanned exactly in `O(|P_i| · |Q_i|)`: small ones (at most
+    /// 256 vertex pairs, where section 3's set-up costs more), and those whose subchains cross the
+    /// line of `l_i` more often than `split` hands to section 3 (clip points are not built).
     pub subproblems_scanned: usize,
     /// Separator route only: cuts not found where the construction puts them (0 under the exact
     /// kernels in every test); the subchain then runs to the end of its wall, which is still sound.
