@@ -191,6 +191,19 @@ pub(crate) struct Winner {
 }
 
 impl Winner {
+    /// The same winner for the chains read backwards: `P` (when `p` holds its length) and/or `Q`
+    /// reversed, vertex `k` becoming `n − 1 − k` and edge `k` becoming `n − 2 − k`.
+    pub(crate) fn reversed(self, p: Option<usize>, q: Option<usize>) -> Winner {
+        let v = |k: usize, n: Option<usize>| n.map_or(k, |n| n - 1 - k);
+        let e = |k: usize, n: Option<usize>| n.map_or(k, |n| n - 2 - k);
+        let cand = match self.cand {
+            Cand::Vv(i, j) => Cand::Vv(v(i, p), v(j, q)),
+            Cand::PvQe(i, j) => Cand::PvQe(v(i, p), e(j, q)),
+            Cand::QvPe(j, i) => Cand::QvPe(v(j, q), e(i, p)),
+        };
+        Winner { cand, ..self }
+    }
+
     /// The chain-local features: `P`'s, then `Q`'s.
     pub(crate) fn features(&self) -> (Feature, Feature) {
         match self.cand {
@@ -657,7 +670,13 @@ fn scan_pruned_best<K: Kernel>(
 /// later one beyond it.
 ///
 /// The answer is the nearest pair of the chains (ties to the first found), or `None` once more
-/// than `budget` candidates have been tried: the count is what the caller bounds the work by.
+/// than `budget` candidates have been tried: the count is what the caller bounds the work by. After
+/// the first pass the windows' sizes for the best so far are counted by moving their ends alone
+/// (no candidate evaluated); when they exceed the budget, `None` at once, so a crowded input costs
+/// `O(n_p + n_q)` comparisons of keys before the caller's fallback. With a finite `cut` (the square
+/// of a distance known elsewhere), candidates bounded strictly above it are skipped and the windows
+/// are never wider than `width(cut)`, as in [`scan_winner_below`]: the winner is the nearest pair
+/// when that is strictly nearer than the known distance, some pair of the chains otherwise.
 ///
 /// # Complexity
 /// `O(n_p + n_q + budget)` bounds and exact tests.
@@ -667,6 +686,7 @@ pub(crate) fn scan_windowed<K: Kernel>(
     tp: &[f64],
     tq: &[f64],
     width: impl Fn(f64) -> f64,
+    cut: f64,
     budget: usize,
 ) -> Option<(Winner, usize)> {
     let (np, nq) = (p.len(), q.len());
@@ -679,7 +699,7 @@ pub(crate) fn scan_windowed<K: Kernel>(
     let mut tried = 0usize;
     let consider = |c: Cand, best: &mut Cand, best_d: &mut Dist2, best_b: &mut (f64, f64)| {
         let b = c.scan_bounds(p, q, true);
-        if b.0 > best_b.1 || !admitted::<K>(c, p, q, true) {
+        if b.0 > best_b.1 || b.0 > cut || !admitted::<K>(c, p, q, true) {
             return;
         }
         let d = c.scan_dist(p, q, true);
@@ -700,6 +720,26 @@ pub(crate) fn scan_windowed<K: Kernel>(
         }
     }
     tried += 2 * np;
+    // The windows' sizes for the best so far, their ends moved without evaluating anything.
+    let w = width(best_b.1.min(cut));
+    let mut ahead = tried;
+    for (xs, ys, tx, ty) in [(np, nq, tp, tq), (nq, np, tq, tp)] {
+        let (mut lo, mut hi) = (0usize, 0usize);
+        for &t in &tx[..xs] {
+            while lo < ys && t - ty[lo] > w {
+                lo += 1;
+            }
+            hi = hi.max(lo);
+            while hi < ys && t - ty[hi] >= -w {
+                hi += 1;
+            }
+            // Vertices and edges against this vertex (an upper bound for the second pass).
+            ahead += 2 * (hi - lo) + 1;
+        }
+        if ahead > budget {
+            return None;
+        }
+    }
     // `P` vertices against `Q` vertices and edges, then `Q` vertices against `P` edges.
     for pass in 0..2 {
         let (ys, tx, ty) = if pass == 0 {
@@ -709,7 +749,7 @@ pub(crate) fn scan_windowed<K: Kernel>(
         };
         let (mut lo, mut hi) = (0usize, 0usize);
         for (x, &t) in tx.iter().enumerate() {
-            let w = width(best_b.1);
+            let w = width(best_b.1.min(cut));
             while lo < ys && t - ty[lo] > w {
                 lo += 1;
             }

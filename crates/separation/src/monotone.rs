@@ -24,16 +24,19 @@
 //! approximations with a proven error bound ([`keys`]); the window is widened by it, so nothing a
 //! skipped pair could win is lost.
 //!
-//! **Linear, or section 3.** The sweep gives up after `16·(|F_P| + |F_Q|) + 1024` candidates
-//! (inputs whose windows are crowded: dense vertices along the line within the clearance), and when
-//! a facing chain is not monotone: section 3 then answers, so the route stays `O(N)`. On saw-teeth
-//! facing each other the windows hold two or three candidates a vertex.
+//! **Linear, or section 3.** The sweep gives up when its windows hold more than
+//! `96·(|F_P| + |F_Q|) + 1024` candidates ([`budget`]; counted before any is tried, by moving the
+//! windows' ends alone: inputs with many vertices within the clearance along the line), and when a
+//! facing chain is not monotone: section 3 then answers, so the route stays `O(N)`. On saw-teeth
+//! facing each other the windows hold about three and a half candidates a vertex.
 
 use glam::DVec2;
 use polydist_polygon::predicates::{Kernel, Orientation, Sign};
 use polydist_polygon::{Feature, SimplePolygon};
 
-use crate::brute::scan_windowed;
+use std::borrow::Cow;
+
+use crate::brute::{Winner, scan_windowed};
 use crate::result::ClosestPair;
 
 /// The monotone sweep's answer: the pair, with internal features of `P` and `Q` (edge `e` joins
@@ -49,7 +52,7 @@ pub(crate) struct Swept {
 ///
 /// # Complexity
 /// `O(N)`: `O(N)` exact degree-2 signs for the extreme vertices and the monotonicity test, `O(N)`
-/// for the keys, and at most `16N + 1024` candidates.
+/// for the keys, and at most `96N + 1024` candidates ([`budget`]).
 pub(crate) fn monotone_sweep<K: Kernel>(
     p: &SimplePolygon,
     q: &SimplePolygon,
@@ -92,6 +95,65 @@ pub(crate) fn monotone_sweep_polyline<K: Kernel>(
     sweep::<K>((t, &it, t.len() + 1), (vq, &iq, vq.len()), a, b)
 }
 
+/// The sweep's budget for `n` vertices in all: `96n + 1024` candidates. A candidate costs a few
+/// dozen instructions (its `f64` bounds, rarely an exact sign), section 3 some 17,000 to 20,000 a
+/// vertex on the inputs measured, so even a sweep that runs out first wastes a small share; and
+/// crowded windows are found before any candidate is tried ([`scan_windowed`]).
+pub(crate) fn budget(n: usize) -> usize {
+    96 * n + 1024
+}
+
+/// The windowed scan of two chains (edge `i` joins vertices `i` and `i + 1`) that are each
+/// monotone along the line through `a` and `b`, either way: the separator's subproblems hand their
+/// section-3 parts here first. No side of the line is needed: `|x − y| ≥ |t(x) − t(y)|/|b − a|`
+/// holds for any two points, and the window rests on that alone. Candidates bounded above `cut`
+/// are skipped ([`scan_windowed`]'s contract). `None` when a chain is not monotone, when the keys
+/// overflow or when the [`budget`] runs out.
+///
+/// # Complexity
+/// `O(n_p + n_q)`: one dot sign per edge, the keys, at most the budget's candidates.
+pub(crate) fn sweep_chains<K: Kernel>(
+    p: &[DVec2],
+    q: &[DVec2],
+    a: DVec2,
+    b: DVec2,
+    cut: f64,
+) -> Option<Winner> {
+    if p.is_empty() || q.is_empty() {
+        return None;
+    }
+    // `Some(false)`: non-decreasing `t`; `Some(true)`: non-increasing; `None`: neither.
+    let backwards = |c: &[DVec2]| {
+        let along = |s: Sign| c.windows(2).all(|w| K::dot_sign(w[0], w[1], a, b) != s);
+        if along(Sign::Negative) {
+            Some(false)
+        } else if along(Sign::Positive) {
+            Some(true)
+        } else {
+            None
+        }
+    };
+    let (rp, rq) = (backwards(p)?, backwards(q)?);
+    fn read(c: &[DVec2], back: bool) -> Cow<'_, [DVec2]> {
+        if back {
+            Cow::Owned(c.iter().rev().copied().collect())
+        } else {
+            Cow::Borrowed(c)
+        }
+    }
+    let (fp, fq) = (read(p, rp), read(q, rq));
+    let (tp, tq, slack) = keys(&fp, &fq, a, b)?;
+    let u = b - a;
+    let len = (u.x * u.x + u.y * u.y).sqrt();
+    if !len.is_finite() {
+        return None;
+    }
+    let width = |u2: f64| window(u2, len, slack);
+    let (winner, _) =
+        scan_windowed::<K>(&fp, &fq, &tp, &tq, width, cut, budget(p.len() + q.len()))?;
+    Some(winner.reversed(rp.then_some(p.len()), rq.then_some(q.len())))
+}
+
 /// Whether the ring `v` lies left of `a → b` (the sign of a vertex off the line; a simple polygon
 /// has one).
 fn left_of<K: Kernel>(v: &[DVec2], a: DVec2, b: DVec2) -> Option<bool> {
@@ -122,8 +184,15 @@ fn sweep<K: Kernel>(
         return None;
     }
     let width = |u2: f64| window(u2, len, slack);
-    let budget = 16 * (fp.len() + fq.len()) + 1024;
-    let (winner, tried) = scan_windowed::<K>(&fp, &fq, &tp, &tq, width, budget)?;
+    let (winner, tried) = scan_windowed::<K>(
+        &fp,
+        &fq,
+        &tp,
+        &tq,
+        width,
+        f64::INFINITY,
+        budget(fp.len() + fq.len()),
+    )?;
     let mut pair = winner.pair();
     pair.feature_p = internal(pair.feature_p, ip, np);
     pair.feature_q = internal(pair.feature_q, iq, nq);
@@ -253,6 +322,91 @@ mod tests {
             4 => DVec2::new(1e12 + u(rng), 1e12 + u(rng)),
             _ => DVec2::new(u(rng) * 1e9, u(rng) * 1e-9),
         }
+    }
+
+    /// `sweep_chains` against the exact scan on random chains monotone along a random lattice
+    /// direction (either way, vertical steps and ties included, the chains free to overlap and
+    /// cross), with and without a cut: the scan's nearest pair exactly when it beats the cut, a
+    /// pair no nearer otherwise; the features are the reversed chains' mapped back.
+    #[test]
+    fn sweep_chains_is_the_exact_scan() {
+        use crate::brute::scan_winner_below;
+        use polydist_predicates::{Dist2, Exact, Robust};
+        use std::cmp::Ordering;
+        let mut rng = SplitMix64::new(0x5ee9);
+        let (mut swept, mut below) = (0, 0);
+        for round in 0..3_000 {
+            let d = loop {
+                let d = DVec2::new(rng.range_i64(-3, 4) as f64, rng.range_i64(-3, 4) as f64);
+                if d != DVec2::ZERO {
+                    break d;
+                }
+            };
+            let perp = DVec2::new(-d.y, d.x);
+            let a = DVec2::new(rng.range_i64(-9, 10) as f64, rng.range_i64(-9, 10) as f64);
+            let float = round % 4 == 3;
+            let chain = |rng: &mut SplitMix64, shift: f64| -> Vec<DVec2> {
+                let k = 1 + rng.index(12);
+                let mut t = rng.range_i64(-6, 0) as f64;
+                let mut c: Vec<DVec2> = (0..k)
+                    .map(|_| {
+                        t += rng.below(3) as f64;
+                        let h = if float {
+                            rng.unit_f64() * 4.0 - 2.0
+                        } else {
+                            rng.range_i64(-8, 9) as f64 * 0.25
+                        };
+                        a + d * t + perp * (h + shift)
+                    })
+                    .collect();
+                c.dedup();
+                if rng.coin() {
+                    c.reverse();
+                }
+                c
+            };
+            let p = chain(&mut rng, 0.0);
+            let shift = [0.0, 1.0, 3.0, -2.5][rng.index(4)];
+            let q = chain(&mut rng, shift);
+            // A cut `c²` with `c` a multiple of 1/4 (exact), or none.
+            let c = if rng.below(3) == 0 {
+                rng.range_i64(1, 33) as f64 * 0.25
+            } else {
+                f64::INFINITY
+            };
+            let cut = c * c;
+            let Some(w) = sweep_chains::<Robust>(&p, &q, a, a + d, cut) else {
+                continue;
+            };
+            swept += 1;
+            let dist = |(fp, fq): (Feature, Feature)| match (fp, fq) {
+                (Feature::Vertex(i), Feature::Vertex(j)) => Dist2::PointPoint(p[i], q[j]),
+                (Feature::Vertex(i), Feature::Edge(j)) => Dist2::PointSegment(p[i], q[j], q[j + 1]),
+                (Feature::Edge(i), Feature::Vertex(j)) => Dist2::PointSegment(q[j], p[i], p[i + 1]),
+                _ => unreachable!("a scan's winner has a vertex"),
+            };
+            let got = dist(w.features());
+            let scan = dist(
+                scan_winner_below::<Exact>(&p, &q, f64::INFINITY)
+                    .0
+                    .features(),
+            );
+            let order = Exact::cmp_dist2(got, scan);
+            // Strictly below the cut, the nearest pair; otherwise some pair.
+            let beats = c.is_infinite()
+                || Exact::cmp_dist2(scan, Dist2::PointPoint(DVec2::ZERO, DVec2::new(c, 0.0)))
+                    == Ordering::Less;
+            if beats {
+                below += 1;
+                assert_eq!(order, Ordering::Equal, "{p:?} {q:?} {a:?} {d:?} {cut}");
+            } else {
+                assert_ne!(order, Ordering::Less, "{p:?} {q:?} {a:?} {d:?} {cut}");
+            }
+        }
+        assert!(
+            swept > 2_000 && below > 1_500,
+            "{swept} swept, {below} compared exactly"
+        );
     }
 
     /// Every key is within `E` of the exact `t(v)`, and a pair the window leaves out is farther

@@ -276,7 +276,7 @@ pub fn separation_of_disjoint<K: Kernel>(
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum HullRouteMethod {
     /// The monotone sweep ([`Route::MonotoneSweep`]) when both facing chains are monotone along the
-    /// line and its budget of `16N + 1024` candidates holds; section 3 otherwise.
+    /// line and its budget of `96N + 1024` candidates holds; section 3 otherwise.
     #[default]
     Auto,
     /// Section 3 always ([`Route::SeparableChains`]): the paper's algorithm alone, for comparison.

@@ -72,8 +72,12 @@ pub struct SeparationStats {
     /// Separator route only: cuts not found where the construction puts them (0 under the exact
     /// kernels in every test); the subchain then runs to the end of its wall, which is still sound.
     pub cut_fallbacks: usize,
+    /// Separator route only: parts of subproblems (pairs of runs across the line of `l_i`) that
+    /// the monotone sweep answered in place of section 3 (both monotone along the line, windows
+    /// within the budget).
+    pub subproblem_parts_swept: usize,
     /// [`Route::MonotoneSweep`](crate::Route::MonotoneSweep) only: the candidate pairs the sweep
-    /// tried (at most `16N + 1024`).
+    /// tried (at most `96N + 1024`).
     pub sweep_candidates: usize,
 }
 

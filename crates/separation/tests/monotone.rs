@@ -188,9 +188,9 @@ fn sweepable_lines(sp: &SimplePolygon, sq: &SimplePolygon) -> Lines {
             );
             if let (Some(fp), Some(fq)) = chains {
                 out.monotone += 1;
-                // The scan tries at most `2|F_P|` neighbours, then per vertex of `F_P` every
-                // vertex and edge of `F_Q`, per vertex of `F_Q` every edge of `F_P`.
-                out.must_sweep &= 2 * fp + 3 * fp * fq <= 16 * (fp + fq) + 1024;
+                // The scan tries `2|F_P|` neighbours, then counts its windows before trying them:
+                // at most `2|F_Q| + 1` per vertex of `F_P` and `2|F_P| + 1` per vertex of `F_Q`.
+                out.must_sweep &= 3 * fp + fq + 4 * fp * fq <= 96 * (fp + fq) + 1024;
             } else {
                 out.must_sweep = false;
             }
@@ -258,7 +258,7 @@ fn check_case<K: Kernel>(p: &[DVec2], q: &[DVec2]) -> Result<Option<Outcome>, Te
             ctx()
         );
         prop_assert!(
-            stats.sweep_candidates >= 1 && stats.sweep_candidates <= 16 * n + 1024,
+            stats.sweep_candidates >= 1 && stats.sweep_candidates <= 96 * n + 1024,
             "candidates {} for N = {n}",
             stats.sweep_candidates
         );
