@@ -81,12 +81,5 @@ pub fn pocket(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
 /// A slab `[0, 4] × [0, h]` with `t` saw teeth on its right side (tips at `x = 5`), and its mirror
 /// image right of it, shifted by half a tooth so that tips face notches, `1/4` beyond the tips.
 pub fn sawteeth(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
-    let p = polydist_oracle::sawtooth((n / 4).max(1));
-    // The mirror image x ↦ 10.25 − x, moved up by one (tips opposite notches), counter-clockwise.
-    let q: Vec<DVec2> = p
-        .iter()
-        .rev()
-        .map(|v| DVec2::new(10.25 - v.x, v.y + 1.0))
-        .collect();
-    (p, q)
+    polydist_oracle::sawteeth_facing((n / 4).max(1))
 }

@@ -108,7 +108,7 @@ pub use crate::generators::precision::{
 pub use crate::generators::rng::SplitMix64;
 pub use crate::generators::simple::{
     CombPair, PocketLid, PocketPair, comb, interleaved_combs, interleaved_combs_ulps,
-    pocket_around, pocket_pair, sawtooth, spiral, star, two_opt,
+    pocket_around, pocket_pair, sawteeth_facing, sawtooth, spiral, star, two_opt,
 };
 pub use crate::hard::{HardAnswers, SimpleHardAnswers};
 pub use crate::hausdorff::{

@@ -142,16 +142,27 @@ pub(crate) fn sweep_chains<K: Kernel>(
         }
     }
     let (fp, fq) = (read(p, rp), read(q, rq));
-    let (tp, tq, slack) = keys(&fp, &fq, a, b)?;
+    let (winner, _) = keyed::<K>(&fp, &fq, a, b, cut)?;
+    Some(winner.reversed(rp.then_some(p.len()), rq.then_some(q.len())))
+}
+
+/// [`scan_windowed`] on two chains listed in non-decreasing order of `t` along the line through
+/// `a` and `b`: their keys, the window, the [`budget`]. The winner and the candidates tried.
+fn keyed<K: Kernel>(
+    fp: &[DVec2],
+    fq: &[DVec2],
+    a: DVec2,
+    b: DVec2,
+    cut: f64,
+) -> Option<(Winner, usize)> {
+    let (tp, tq, slack) = keys(fp, fq, a, b)?;
     let u = b - a;
     let len = (u.x * u.x + u.y * u.y).sqrt();
     if !len.is_finite() {
         return None;
     }
     let width = |u2: f64| window(u2, len, slack);
-    let (winner, _) =
-        scan_windowed::<K>(&fp, &fq, &tp, &tq, width, cut, budget(p.len() + q.len()))?;
-    Some(winner.reversed(rp.then_some(p.len()), rq.then_some(q.len())))
+    scan_windowed::<K>(fp, fq, &tp, &tq, width, cut, budget(fp.len() + fq.len()))
 }
 
 /// Whether the ring `v` lies left of `a → b` (the sign of a vertex off the line; a simple polygon
@@ -177,22 +188,7 @@ fn sweep<K: Kernel>(
 ) -> Option<Swept> {
     let fp: Vec<DVec2> = ip.iter().map(|&i| vp[i]).collect();
     let fq: Vec<DVec2> = iq.iter().map(|&i| vq[i]).collect();
-    let (tp, tq, slack) = keys(&fp, &fq, a, b)?;
-    let u = b - a;
-    let len = (u.x * u.x + u.y * u.y).sqrt();
-    if !len.is_finite() {
-        return None;
-    }
-    let width = |u2: f64| window(u2, len, slack);
-    let (winner, tried) = scan_windowed::<K>(
-        &fp,
-        &fq,
-        &tp,
-        &tq,
-        width,
-        f64::INFINITY,
-        budget(fp.len() + fq.len()),
-    )?;
+    let (winner, tried) = keyed::<K>(&fp, &fq, a, b, f64::INFINITY)?;
     let mut pair = winner.pair();
     pair.feature_p = internal(pair.feature_p, ip, np);
     pair.feature_q = internal(pair.feature_q, iq, nq);

@@ -11,10 +11,9 @@
 
 use glam::DVec2;
 use polydist_oracle::{
-    Contact, ExactDistance, SplitMix64, boundary_distance, contact_status_convex, feature_sq_dist,
-    sawtooth, star, ulps_error_sqrt,
+    Contact, SplitMix64, boundary_distance, contact_status_convex, feature_sq_dist,
+    sawteeth_facing, star,
 };
-use polydist_polygon::Feature;
 use polydist_polygon::SimplePolygon;
 use polydist_polygon::predicates::{Exact, Fast, Kernel, Orientation, Robust, Sign};
 use polydist_separation::{
@@ -23,66 +22,11 @@ use polydist_separation::{
 };
 use proptest::prelude::*;
 
+mod common;
+use common::pairs::{bbox, check_optimal, oracle_feature, place_beside};
+
 // ------------------------------------------------------------------------------------------------
-// Helpers (copied from tests/polygons.rs: integration tests cannot share private functions).
-
-fn oracle_feature(f: Feature) -> polydist_oracle::Feature {
-    match f {
-        Feature::Vertex(i) => polydist_oracle::Feature::Vertex(i),
-        Feature::Edge(i) => polydist_oracle::Feature::Edge(i),
-    }
-}
-
-/// `pair` is an exact optimum of the oracle's answer, its distance within 3.5 ulps.
-fn check_optimal(exact: &ExactDistance, pair: &ClosestPair) -> Result<(), TestCaseError> {
-    prop_assert!(
-        exact.is_optimal_pair(
-            oracle_feature(pair.feature_p),
-            oracle_feature(pair.feature_q)
-        ),
-        "not optimal: {:?} {:?}",
-        pair.feature_p,
-        pair.feature_q
-    );
-    prop_assert!(
-        ulps_error_sqrt(pair.distance, &exact.sq) <= 3.5,
-        "distance {} off by {} ulps",
-        pair.distance,
-        ulps_error_sqrt(pair.distance, &exact.sq)
-    );
-    Ok(())
-}
-
-fn bbox(p: &[DVec2]) -> (DVec2, DVec2) {
-    let lo = p.iter().fold(DVec2::splat(f64::INFINITY), |a, &b| a.min(b));
-    let hi = p
-        .iter()
-        .fold(DVec2::splat(f64::NEG_INFINITY), |a, &b| a.max(b));
-    (lo, hi)
-}
-
-/// `q` moved so that its bounding box is `gap` beyond `p`'s along the axis `axis` (0 = x, 1 = y) in
-/// the direction `dir` (±1), and slid along the other axis by `slide` times `p`'s extent.
-fn place_beside(
-    p: &[DVec2],
-    q: &[DVec2],
-    axis: usize,
-    dir: f64,
-    gap: f64,
-    slide: f64,
-) -> Vec<DVec2> {
-    let (plo, phi) = bbox(p);
-    let (qlo, qhi) = bbox(q);
-    let mut shift = DVec2::ZERO;
-    if dir > 0.0 {
-        shift[axis] = phi[axis] - qlo[axis] + gap;
-    } else {
-        shift[axis] = plo[axis] - qhi[axis] - gap;
-    }
-    let other = 1 - axis;
-    shift[other] = plo[other] - qlo[other] + slide * (phi[other] - plo[other]);
-    q.iter().map(|&v| v + shift).collect()
-}
+// Helpers.
 
 fn ring_str(v: &[DVec2]) -> String {
     let pts: Vec<String> = v
@@ -913,24 +857,13 @@ fn crowded_windows_exhaust_the_budget() {
 // ------------------------------------------------------------------------------------------------
 // Linearity by counting.
 
-/// Saw-teeth facing each other (tips opposite notches), as in the benches.
-fn sawteeth(t: usize) -> (Vec<DVec2>, Vec<DVec2>) {
-    let p = sawtooth(t);
-    let q: Vec<DVec2> = p
-        .iter()
-        .rev()
-        .map(|v| DVec2::new(10.25 - v.x, v.y + 1.0))
-        .collect();
-    (p, q)
-}
-
 /// The sweep answers the saw-teeth with a bounded number of candidates per vertex, not growing with
 /// the number of teeth; its distance is the oracle's (small sizes) and section 3's (all sizes).
 #[test]
 fn sawteeth_candidates_per_vertex_stay_bounded() {
     let mut ratios = Vec::new();
     for t in [16usize, 64, 256, 1024, 4096] {
-        let (p, q) = sawteeth(t);
+        let (p, q) = sawteeth_facing(t);
         let (sp, sq) = (
             SimplePolygon::try_new(&p).unwrap(),
             SimplePolygon::try_new(&q).unwrap(),
@@ -1007,7 +940,7 @@ fn fast_kernel_never_panics() {
             let _ = separation::<Fast>(&sp, &sq);
         }
     }
-    let (p, q) = sawteeth(256);
+    let (p, q) = sawteeth_facing(256);
     let (sp, sq) = (
         SimplePolygon::try_new(&p).unwrap(),
         SimplePolygon::try_new(&q).unwrap(),

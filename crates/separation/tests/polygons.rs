@@ -3,24 +3,20 @@
 
 use glam::DVec2;
 use polydist_oracle::{
-    Contact, ExactDistance, SplitMix64, boundary_distance, chain_distance, comb,
-    contact_status_convex, contact_status_simple, spiral, star, two_opt, ulps_error_sqrt,
+    Contact, SplitMix64, boundary_distance, chain_distance, comb, contact_status_convex,
+    contact_status_simple, spiral, star, two_opt, ulps_error_sqrt,
 };
 use polydist_polygon::predicates::{Exact, Fast, Kernel, Robust};
 use polydist_polygon::{Feature, Location, SimplePolygon};
 use polydist_separation::{
-    Chain, ClosestPair, Intersection, PolygonSeparation, Route, SeparationError, intersection,
-    point_to_polygon, polygon_separation_brute, polyline_to_polygon, segment_to_polygon,
-    separation, separation_brute, separation_of_disjoint,
+    Chain, Intersection, PolygonSeparation, Route, SeparationError, intersection, point_to_polygon,
+    polygon_separation_brute, polyline_to_polygon, segment_to_polygon, separation,
+    separation_brute, separation_of_disjoint,
 };
 use proptest::prelude::*;
 
-fn oracle_feature(f: Feature) -> polydist_oracle::Feature {
-    match f {
-        Feature::Vertex(i) => polydist_oracle::Feature::Vertex(i),
-        Feature::Edge(i) => polydist_oracle::Feature::Edge(i),
-    }
-}
+mod common;
+use common::pairs::{bbox, check_optimal, oracle_feature, place_beside};
 
 /// A random simple polygon of one of the generator families, scaled and moved by dyadic amounts
 /// (exact), with about `n` vertices.
@@ -39,53 +35,6 @@ fn shape(rng: &mut SplitMix64, n: usize) -> Vec<DVec2> {
             comb(teeth, 1 + rng.below(5) as u32, 1 + rng.below(3) as u32)
         }
     }
-}
-
-fn bbox(p: &[DVec2]) -> (DVec2, DVec2) {
-    let lo = p.iter().fold(DVec2::splat(f64::INFINITY), |a, &b| a.min(b));
-    let hi = p
-        .iter()
-        .fold(DVec2::splat(f64::NEG_INFINITY), |a, &b| a.max(b));
-    (lo, hi)
-}
-
-/// `q` moved so that its bounding box is `gap` beyond `p`'s along the axis `axis` (0 = x, 1 = y) in
-/// the direction `dir` (±1), and slid along the other axis by `slide` times `p`'s extent. Exact when
-/// the sums are (dyadic inputs of moderate size).
-fn place_beside(
-    p: &[DVec2],
-    q: &[DVec2],
-    axis: usize,
-    dir: f64,
-    gap: f64,
-    slide: f64,
-) -> Vec<DVec2> {
-    let (plo, phi) = bbox(p);
-    let (qlo, qhi) = bbox(q);
-    let mut shift = DVec2::ZERO;
-    if dir > 0.0 {
-        shift[axis] = phi[axis] - qlo[axis] + gap;
-    } else {
-        shift[axis] = plo[axis] - qhi[axis] - gap;
-    }
-    let other = 1 - axis;
-    shift[other] = plo[other] - qlo[other] + slide * (phi[other] - plo[other]);
-    q.iter().map(|&v| v + shift).collect()
-}
-
-/// `pair` is an exact optimum of the oracle's answer, its distance within 3.5 ulps.
-fn check_optimal(exact: &ExactDistance, pair: &ClosestPair) -> Result<(), TestCaseError> {
-    prop_assert!(
-        exact.is_optimal_pair(
-            oracle_feature(pair.feature_p),
-            oracle_feature(pair.feature_q)
-        ),
-        "not optimal: {:?} {:?}",
-        pair.feature_p,
-        pair.feature_q
-    );
-    prop_assert!(ulps_error_sqrt(pair.distance, &exact.sq) <= 3.5);
-    Ok(())
 }
 
 /// Checks one pair: the intersection check against the oracle and the brute force, and when the

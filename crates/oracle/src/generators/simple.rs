@@ -474,3 +474,19 @@ pub fn sawtooth(t: usize) -> Vec<DVec2> {
     p.push(DVec2::new(0.0, 2.0 * t as f64));
     p
 }
+
+/// Two saw-tooth slabs facing each other: [`sawtooth`]`(t)` and its mirror image `x ↦ 10.25 − x`
+/// moved up by one, so that tips face notches `1/4` beyond the tips (counter-clockwise, exact). The
+/// convex hulls are disjoint and their closest features are lids.
+///
+/// # Panics
+/// Panics if `t` is 0.
+pub fn sawteeth_facing(t: usize) -> (Vec<DVec2>, Vec<DVec2>) {
+    let p = sawtooth(t);
+    let q: Vec<DVec2> = p
+        .iter()
+        .rev()
+        .map(|v| DVec2::new(10.25 - v.x, v.y + 1.0))
+        .collect();
+    (p, q)
+}

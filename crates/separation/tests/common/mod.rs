@@ -1,6 +1,8 @@
 //! Seeded generators of chains separated by a line and monotone along it.
 #![allow(dead_code, reason = "each test file uses a subset")]
 
+pub(crate) mod pairs;
+
 use glam::DVec2;
 use polydist_oracle::SplitMix64;
 
