@@ -655,6 +655,30 @@ fn scan_pruned_best<K: Kernel>(
     (best, best_b.1)
 }
 
+/// The window of [`scan_windowed`] over the other chain's keys `ty`: its ends only move forward,
+/// for keys `t` visited in non-decreasing exact order.
+#[derive(Default)]
+struct Window {
+    lo: usize,
+    hi: usize,
+}
+
+impl Window {
+    /// The vertices `lo..hi` of `ty` not certainly farther than `w` from `t`: those before `lo`
+    /// were certainly left of an earlier window (so of this one), the one at `hi` is certainly
+    /// right of this one (and so is every later one).
+    fn around(&mut self, t: f64, ty: &[f64], w: f64) -> (usize, usize) {
+        while self.lo < ty.len() && t - ty[self.lo] > w {
+            self.lo += 1;
+        }
+        self.hi = self.hi.max(self.lo);
+        while self.hi < ty.len() && t - ty[self.hi] >= -w {
+            self.hi += 1;
+        }
+        (self.lo, self.hi)
+    }
+}
+
 /// [`scan`] (`interior_only`) over lateral windows, for two chains whose vertices come in
 /// non-decreasing order of an exact key `t` (the monotone sweep, `monotone.rs`): `tp` and `tq` hold
 /// approximations `t̂` of the keys, and `width(U²)` a window `W` such that a vertex pair or vertex
@@ -724,15 +748,9 @@ pub(crate) fn scan_windowed<K: Kernel>(
     let w = width(best_b.1.min(cut));
     let mut ahead = tried;
     for (xs, ys, tx, ty) in [(np, nq, tp, tq), (nq, np, tq, tp)] {
-        let (mut lo, mut hi) = (0usize, 0usize);
+        let mut window = Window::default();
         for &t in &tx[..xs] {
-            while lo < ys && t - ty[lo] > w {
-                lo += 1;
-            }
-            hi = hi.max(lo);
-            while hi < ys && t - ty[hi] >= -w {
-                hi += 1;
-            }
+            let (lo, hi) = window.around(t, &ty[..ys], w);
             // Vertices and edges against this vertex (an upper bound for the second pass).
             ahead += 2 * (hi - lo) + 1;
         }
@@ -747,16 +765,9 @@ pub(crate) fn scan_windowed<K: Kernel>(
         } else {
             (np, tq, tp)
         };
-        let (mut lo, mut hi) = (0usize, 0usize);
+        let mut window = Window::default();
         for (x, &t) in tx.iter().enumerate() {
-            let w = width(best_b.1.min(cut));
-            while lo < ys && t - ty[lo] > w {
-                lo += 1;
-            }
-            hi = hi.max(lo);
-            while hi < ys && t - ty[hi] >= -w {
-                hi += 1;
-            }
+            let (lo, hi) = window.around(t, &ty[..ys], width(best_b.1.min(cut)));
             // Edges `lo − 1 .. hi` (edge `k` joins `k` and `k + 1`): the one before `lo` ends
             // inside or beyond the window, the one at `hi` starts beyond it.
             let edges = lo.saturating_sub(1)..hi.min(ys - 1);

@@ -83,13 +83,10 @@ pub(crate) fn monotone_sweep_polyline<K: Kernel>(
     if t.len() < 2 || t.windows(2).any(|w| w[0] == w[1]) {
         return None;
     }
-    let along = |s: Sign| t.windows(2).all(|w| K::dot_sign(w[0], w[1], a, b) != s);
-    let it: Vec<usize> = if along(Sign::Negative) {
-        (0..t.len()).collect()
-    } else if along(Sign::Positive) {
+    let it: Vec<usize> = if backwards::<K>(t, a, b)? {
         (0..t.len()).rev().collect()
     } else {
-        return None;
+        (0..t.len()).collect()
     };
     // No ring: an index past the end never wraps, so edge `k` is named by its lower end.
     sweep::<K>((t, &it, t.len() + 1), (vq, &iq, vq.len()), a, b)
@@ -122,18 +119,7 @@ pub(crate) fn sweep_chains<K: Kernel>(
     if p.is_empty() || q.is_empty() {
         return None;
     }
-    // `Some(false)`: non-decreasing `t`; `Some(true)`: non-increasing; `None`: neither.
-    let backwards = |c: &[DVec2]| {
-        let along = |s: Sign| c.windows(2).all(|w| K::dot_sign(w[0], w[1], a, b) != s);
-        if along(Sign::Negative) {
-            Some(false)
-        } else if along(Sign::Positive) {
-            Some(true)
-        } else {
-            None
-        }
-    };
-    let (rp, rq) = (backwards(p)?, backwards(q)?);
+    let (rp, rq) = (backwards::<K>(p, a, b)?, backwards::<K>(q, a, b)?);
     fn read(c: &[DVec2], back: bool) -> Cow<'_, [DVec2]> {
         if back {
             Cow::Owned(c.iter().rev().copied().collect())
@@ -163,6 +149,20 @@ fn keyed<K: Kernel>(
     }
     let width = |u2: f64| window(u2, len, slack);
     scan_windowed::<K>(fp, fq, &tp, &tq, width, cut, budget(fp.len() + fq.len()))
+}
+
+/// How the chain `c` runs along the line through `a` and `b`: `Some(false)` when `t` never
+/// decreases, `Some(true)` when it never increases (and does somewhere), `None` when neither. One
+/// exact dot sign per edge, twice at most.
+fn backwards<K: Kernel>(c: &[DVec2], a: DVec2, b: DVec2) -> Option<bool> {
+    let along = |s: Sign| c.windows(2).all(|w| K::dot_sign(w[0], w[1], a, b) != s);
+    if along(Sign::Negative) {
+        Some(false)
+    } else if along(Sign::Positive) {
+        Some(true)
+    } else {
+        None
+    }
 }
 
 /// Whether the ring `v` lies left of `a → b` (the sign of a vertex off the line; a simple polygon
