@@ -3,6 +3,7 @@
 //! `interior_only`), which add an exact pre-filter ([`bounds`]) to the same answer.
 
 use core::cmp::Ordering;
+use core::ops::Range;
 
 use glam::DVec2;
 use polydist_polygon::Feature;
@@ -11,6 +12,7 @@ use polydist_predicates::{Dist2, Kernel, Sign, is_valid_coordinate};
 use crate::chain::validate;
 use crate::construct::{vertex_edge, vertex_vertex};
 use crate::error::{Chain, SeparationError};
+use crate::monotone::Lens;
 use crate::result::ClosestPair;
 
 /// `true` when the open segment `(p, q)` meets the closed segment `[a, b]` (exact under `K`; eight
@@ -680,117 +682,363 @@ impl Window {
 }
 
 /// [`scan`] (`interior_only`) over lateral windows, for two chains whose vertices come in
-/// non-decreasing order of an exact key `t` (the monotone sweep, `monotone.rs`): `tp` and `tq` hold
-/// approximations `t̂` of the keys, and `width(U²)` a window `W` such that a vertex pair or vertex
-/// and edge whose computed key gap `fl(t̂_y − t̂_x)` exceeds `W` is certainly farther apart than
-/// `U` (the caller's error analysis). `U²` is the current best candidate's squared-distance upper
-/// bound, so a skipped candidate certainly loses.
+/// non-decreasing order of an exact key `t` (the monotone sweep, `monotone.rs`): `kp` and `kq` hold
+/// approximations `t̂` of the keys and `d̂` of the depths `d` across the line, and `lens` their error
+/// analysis ([`Lens`]): a window `W` such that a pair whose computed key gap exceeds `W` is
+/// certainly farther apart than `U`, and a test that two boxes of keys are certainly farther apart
+/// than `U` (`|x − y|²·|b − a|² = Δt² + Δd²`, so the gaps of `t` and of `d` bound a distance
+/// together). `U²` is the current best candidate's squared-distance upper bound, so a skipped
+/// candidate certainly loses.
 ///
 /// A first pass takes each `P` vertex against the `Q` vertices next to it in key order, so the
 /// windows start narrow; then each `P` vertex against the `Q` vertices and edges in its window, and
 /// each `Q` vertex against the `P` edges in its window. The window's ends only move forward:
 /// vertices left behind were certainly out of an earlier, wider window of a smaller key, so of this
 /// one too (exact keys are sorted); the first vertex certainly beyond the right end has every
-/// later one beyond it.
+/// later one beyond it. Inside the window the other chain is taken in blocks of [`BLOCK`]
+/// consecutive vertices (with the edges between them): a block whose box of keys is certainly
+/// farther than `U` is skipped whole, and each candidate of the other blocks is skipped when its
+/// own keys put it certainly farther than `U`, before its distance is bounded. On inputs whose
+/// windows along the line are crowded but whose depths differ by about the clearance (walls of a
+/// corridor, sampled far more finely than it is wide) this leaves a few candidates a vertex.
 ///
 /// The answer is the nearest pair of the chains (ties to the first found), or `None` once more
 /// than `budget` candidates have been tried: the count is what the caller bounds the work by. After
-/// the first pass the windows' sizes for the best so far are counted by moving their ends alone
-/// (no candidate evaluated); when they exceed the budget, `None` at once, so a crowded input costs
-/// `O(n_p + n_q)` comparisons of keys before the caller's fallback. With a finite `cut` (the square
-/// of a distance known elsewhere), candidates bounded strictly above it are skipped and the windows
-/// are never wider than `width(cut)`, as in [`scan_winner_below`]: the winner is the nearest pair
-/// when that is strictly nearer than the known distance, some pair of the chains otherwise.
+/// the first pass the work for the best so far is counted before any candidate is evaluated: the
+/// blocks the windows meet (their ends moved alone, `O(n_p + n_q)`), then, when those fit the
+/// budget, the candidates of the blocks not skipped whole; when either exceeds the budget, `None`
+/// at once. With a finite `cut` (the square of a distance known elsewhere), candidates bounded
+/// strictly above it are skipped and the windows are never wider than for `cut`, as in
+/// [`scan_winner_below`]: the winner is the nearest pair when that is strictly nearer than the
+/// known distance, some pair of the chains otherwise.
 ///
 /// # Complexity
-/// `O(n_p + n_q + budget)` bounds and exact tests.
+/// `O(n_p + n_q + budget)` key comparisons, bounds and exact tests.
 pub(crate) fn scan_windowed<K: Kernel>(
     p: &[DVec2],
     q: &[DVec2],
-    tp: &[f64],
-    tq: &[f64],
-    width: impl Fn(f64) -> f64,
+    kp: Keys<'_>,
+    kq: Keys<'_>,
+    lens: &Lens,
     cut: f64,
     budget: usize,
 ) -> Option<(Winner, usize)> {
     let (np, nq) = (p.len(), q.len());
-    if np == 0 || nq == 0 || tp.len() != np || tq.len() != nq {
+    if np == 0
+        || nq == 0
+        || kp.t.len() != np
+        || kq.t.len() != nq
+        || kp.d.len() != np
+        || kq.d.len() != nq
+    {
         return None;
     }
-    let mut best = Cand::Vv(0, 0);
-    let mut best_d = best.scan_dist(p, q, true);
-    let mut best_b = best.scan_bounds(p, q, true);
+    let mut best = Swept::<K>::new(p, q, cut);
     let mut tried = 0usize;
-    let consider = |c: Cand, best: &mut Cand, best_d: &mut Dist2, best_b: &mut (f64, f64)| {
-        let b = c.scan_bounds(p, q, true);
-        if b.0 > best_b.1 || b.0 > cut || !admitted::<K>(c, p, q, true) {
-            return;
-        }
-        let d = c.scan_dist(p, q, true);
-        if b.1 < best_b.0 || cmp_scan::<K>(d, *best_d) == Ordering::Less {
-            *best = c;
-            *best_d = d;
-            *best_b = b;
-        }
-    };
     // The neighbours in key order.
+    let (tp, tq) = (kp.t, kq.t);
     let mut j = 0;
     for (i, &ti) in tp.iter().enumerate() {
         while j + 1 < nq && tq[j + 1] <= ti {
             j += 1;
         }
         for k in j..(j + 2).min(nq) {
-            consider(Cand::Vv(i, k), &mut best, &mut best_d, &mut best_b);
+            best.consider(Cand::Vv(i, k));
         }
     }
     tried += 2 * np;
-    // The windows' sizes for the best so far, their ends moved without evaluating anything.
-    let w = width(best_b.1.min(cut));
-    let mut ahead = tried;
-    for (xs, ys, tx, ty) in [(np, nq, tp, tq), (nq, np, tq, tp)] {
+    // `P` vertices against `Q` vertices and edges (pass 0), `Q` vertices against `P` edges (pass 1).
+    let sides = |pass: usize| if pass == 0 { (kp, kq) } else { (kq, kp) };
+    // The work for the best so far, counted before any candidate is evaluated: first the coarse
+    // blocks the windows meet and all their candidates (their ends moved alone), then, unless those
+    // candidates fit the budget, the candidates of the fine blocks not skipped.
+    let u2 = best.u2();
+    let w = lens.window(u2);
+    let (mut coarse, mut whole) = (0usize, tried);
+    for pass in 0..2 {
+        let (kx, ky) = sides(pass);
         let mut window = Window::default();
-        for &t in &tx[..xs] {
-            let (lo, hi) = window.around(t, &ty[..ys], w);
-            // Vertices and edges against this vertex (an upper bound for the second pass).
-            ahead += 2 * (hi - lo) + 1;
-        }
-        if ahead > budget {
-            return None;
+        for &t in kx.t {
+            let span = Span::of(window.around(t, ky.t, w), ky.t.len());
+            coarse += span.blocks(BLOCK * GROUP).len();
+            whole += span.es.len() + if pass == 0 { span.vs.len() } else { 0 };
         }
     }
-    // `P` vertices against `Q` vertices and edges, then `Q` vertices against `P` edges.
-    for pass in 0..2 {
-        let (ys, tx, ty) = if pass == 0 {
-            (nq, tp, tq)
-        } else {
-            (np, tq, tp)
-        };
+    if coarse > budget {
+        return None;
+    }
+    // Windows of a few candidates a vertex (saw-teeth: about three and a half) are taken whole:
+    // blocks and keys would cost more than they save.
+    let blocks = (whole > SPARSE * (np + nq)).then(|| [Blocks::of(kq), Blocks::of(kp)]);
+    // The parts of the current window to try, reused from vertex to vertex.
+    let mut kept = Vec::new();
+    let mut ahead = tried;
+    for pass in (0..2).filter(|_| whole > budget) {
+        let ((kx, ky), by) = (sides(pass), blocks.as_ref().map(|b| &b[pass]));
         let mut window = Window::default();
-        for (x, &t) in tx.iter().enumerate() {
-            let (lo, hi) = window.around(t, &ty[..ys], width(best_b.1.min(cut)));
-            // Edges `lo − 1 .. hi` (edge `k` joins `k` and `k + 1`): the one before `lo` ends
-            // inside or beyond the window, the one at `hi` starts beyond it.
-            let edges = lo.saturating_sub(1)..hi.min(ys - 1);
-            tried += edges.len();
-            if pass == 0 {
-                tried += hi - lo;
-                for y in lo..hi {
-                    consider(Cand::Vv(x, y), &mut best, &mut best_d, &mut best_b);
+        for (&t, &d) in kx.t.iter().zip(kx.d) {
+            let span = Span::of(window.around(t, ky.t, w), ky.t.len());
+            match by {
+                Some(by) => by.survivors(&span, (t, d), lens, u2, &mut kept),
+                None => kept.push((span.vs, span.es)),
+            }
+            for (vs, es) in kept.drain(..) {
+                ahead += es.len() + if pass == 0 { vs.len() } else { 0 };
+            }
+            if ahead > budget {
+                return None;
+            }
+        }
+    }
+    for pass in 0..2 {
+        let ((kx, ky), by) = (sides(pass), blocks.as_ref().map(|b| &b[pass]));
+        let mut window = Window::default();
+        for (x, (&t, &d)) in kx.t.iter().zip(kx.d).enumerate() {
+            let u2 = best.u2();
+            let span = Span::of(window.around(t, ky.t, lens.window(u2)), ky.t.len());
+            let Some(by) = by else {
+                tried += best.span(pass, x, (span.vs, span.es), |_, _, _| false);
+                if tried > budget {
+                    return None;
                 }
-                for e in edges {
-                    consider(Cand::PvQe(x, e), &mut best, &mut best_d, &mut best_b);
-                }
-            } else {
-                for e in edges {
-                    consider(Cand::QvPe(x, e), &mut best, &mut best_d, &mut best_b);
-                }
+                continue;
+            };
+            by.survivors(&span, (t, d), lens, u2, &mut kept);
+            for part in kept.drain(..) {
+                tried += best.span(pass, x, part, |lo, hi, u2| ky.far(lo, hi, (t, d), lens, u2));
             }
             if tried > budget {
                 return None;
             }
         }
     }
-    Some((best.winner(p, q), tried))
+    Some((best.best.winner(p, q), tried))
+}
+
+/// [`scan_windowed`]'s best candidate so far, with its exact distance and its bounds.
+struct Swept<'a, K> {
+    p: &'a [DVec2],
+    q: &'a [DVec2],
+    cut: f64,
+    best: Cand,
+    d: Dist2,
+    b: (f64, f64),
+    kernel: core::marker::PhantomData<K>,
+}
+
+impl<'a, K: Kernel> Swept<'a, K> {
+    fn new(p: &'a [DVec2], q: &'a [DVec2], cut: f64) -> Self {
+        let best = Cand::Vv(0, 0);
+        Swept {
+            p,
+            q,
+            cut,
+            best,
+            d: best.scan_dist(p, q, true),
+            b: best.scan_bounds(p, q, true),
+            kernel: core::marker::PhantomData,
+        }
+    }
+
+    /// The squared distance a candidate must not be certainly above: the best's upper bound, or
+    /// the cut.
+    fn u2(&self) -> f64 {
+        self.b.1.min(self.cut)
+    }
+
+    /// Takes `c` when it is nearer than the best (exactly, after the bounds), as [`scan`] does.
+    #[inline]
+    fn consider(&mut self, c: Cand) {
+        let (p, q) = (self.p, self.q);
+        let b = c.scan_bounds(p, q, true);
+        if b.0 > self.b.1 || b.0 > self.cut || !admitted::<K>(c, p, q, true) {
+            return;
+        }
+        let d = c.scan_dist(p, q, true);
+        if b.1 < self.b.0 || cmp_scan::<K>(d, self.d) == Ordering::Less {
+            self.best = c;
+            self.d = d;
+            self.b = b;
+        }
+    }
+
+    /// Vertex `x` of the pass's own chain against the other chain's vertices `vs` (pass 0 only)
+    /// and edges `es`, each skipped when `far(lo, hi, u2)` says the other chain's vertices `lo` to
+    /// `hi` are certainly farther than `√u2`. The candidates tried.
+    #[inline]
+    fn span(
+        &mut self,
+        pass: usize,
+        x: usize,
+        (vs, es): (Range<usize>, Range<usize>),
+        far: impl Fn(usize, usize, f64) -> bool,
+    ) -> usize {
+        let tried = es.len() + if pass == 0 { vs.len() } else { 0 };
+        if pass == 0 {
+            for y in vs {
+                if !far(y, y, self.u2()) {
+                    self.consider(Cand::Vv(x, y));
+                }
+            }
+        }
+        for e in es {
+            if !far(e, e + 1, self.u2()) {
+                self.consider(if pass == 0 {
+                    Cand::PvQe(x, e)
+                } else {
+                    Cand::QvPe(x, e)
+                });
+            }
+        }
+        tried
+    }
+}
+
+/// The keys of a chain for [`scan_windowed`]: `t̂` along the line (non-decreasing up to rounding)
+/// and `d̂` across it, one each a vertex.
+#[derive(Clone, Copy)]
+pub(crate) struct Keys<'a> {
+    pub(crate) t: &'a [f64],
+    pub(crate) d: &'a [f64],
+}
+
+impl Keys<'_> {
+    /// Whether the vertices `lo` to `hi` (one vertex, or the ends of an edge) are certainly
+    /// farther than `√u2` from the vertex with keys `x`, by their own keys: their box is a point
+    /// (a vertex) or the keys of the ends (an edge: `t` and `d` are affine, so its points lie
+    /// between them).
+    #[inline]
+    fn far(&self, lo: usize, hi: usize, (t, d): (f64, f64), lens: &Lens, u2: f64) -> bool {
+        let gt = lens.gap((t, t), hull(self.t[lo], self.t[hi]));
+        let gd = lens.gap((d, d), hull(self.d[lo], self.d[hi]));
+        lens.beyond(gt, gd, u2)
+    }
+}
+
+/// Candidates a vertex up to which [`scan_windowed`] takes its windows whole.
+const SPARSE: usize = 8;
+
+/// Vertices a fine block of [`scan_windowed`]: small enough that a fine block that is not skipped
+/// holds few candidates, large enough that skipping one saves several.
+const BLOCK: usize = 8;
+/// Fine blocks a coarse block: windows thousands of vertices wide (dense zigzags one unit apart)
+/// cost a test per 64 vertices where the depths rule them out.
+const GROUP: usize = 8;
+
+/// `(lo, hi)` with `lo ≤ hi`, of two keys in either order.
+fn hull(a: f64, b: f64) -> (f64, f64) {
+    if a <= b { (a, b) } else { (b, a) }
+}
+
+/// The boxes of keys of a chain's blocks of `size` vertices: block `k` holds the vertices
+/// `k·size ..= min((k + 1)·size, n − 1)` and so the edges `k·size .. min((k + 1)·size, n − 1)`
+/// between them; its box is the least and greatest `t̂` and `d̂` of those vertices.
+struct Boxes {
+    t: Vec<(f64, f64)>,
+    d: Vec<(f64, f64)>,
+}
+
+impl Boxes {
+    fn of(k: Keys<'_>, size: usize) -> Boxes {
+        let n = k.t.len();
+        let count = n.div_ceil(size);
+        let (mut t, mut d) = (Vec::with_capacity(count), Vec::with_capacity(count));
+        for b in 0..count {
+            let ends = b * size..=((b + 1) * size).min(n - 1);
+            let (t0, d0) = (k.t[b * size], k.d[b * size]);
+            let (mut bt, mut bd) = ((t0, t0), (d0, d0));
+            for (&x, &y) in k.t[ends.clone()].iter().zip(&k.d[ends]) {
+                bt = (bt.0.min(x), bt.1.max(x));
+                bd = (bd.0.min(y), bd.1.max(y));
+            }
+            t.push(bt);
+            d.push(bd);
+        }
+        Boxes { t, d }
+    }
+
+    /// Whether every vertex and edge of block `k` is certainly farther than `√u2` from the vertex
+    /// with keys `(t, d)`.
+    fn beyond(&self, k: usize, (t, d): (f64, f64), lens: &Lens, u2: f64) -> bool {
+        lens.beyond(lens.gap((t, t), self.t[k]), lens.gap((d, d), self.d[k]), u2)
+    }
+}
+
+/// A chain's fine blocks ([`BLOCK`] vertices) and coarse blocks ([`GROUP`] fine ones).
+struct Blocks {
+    fine: Boxes,
+    coarse: Boxes,
+}
+
+impl Blocks {
+    fn of(k: Keys<'_>) -> Blocks {
+        Blocks {
+            fine: Boxes::of(k, BLOCK),
+            coarse: Boxes::of(k, BLOCK * GROUP),
+        }
+    }
+
+    /// Pushes the vertices and edges of each fine block of `span` that is not certainly farther
+    /// than `√u2` from the vertex with keys `x` onto `out`, testing the coarse blocks first (a
+    /// coarse block's box holds its fine blocks', and is tested only when the span holds more than
+    /// two of them). At most `GROUP + 1` box tests per coarse block of the span.
+    #[inline]
+    fn survivors(
+        &self,
+        span: &Span,
+        x: (f64, f64),
+        lens: &Lens,
+        u2: f64,
+        out: &mut Vec<(Range<usize>, Range<usize>)>,
+    ) {
+        let fine = span.blocks(BLOCK);
+        for c in span.blocks(BLOCK * GROUP) {
+            let inner = (c * GROUP).max(fine.start)..((c + 1) * GROUP).min(fine.end);
+            if inner.len() > 2 && self.coarse.beyond(c, x, lens, u2) {
+                continue;
+            }
+            for k in inner {
+                if !self.fine.beyond(k, x, lens, u2) {
+                    out.push(span.within(k));
+                }
+            }
+        }
+    }
+}
+
+/// The vertices `lo..hi` and the edges `lo − 1 .. min(hi, n − 1)` of a window over a chain of `n`
+/// vertices (edge `k` joins `k` and `k + 1`: the one before `lo` ends inside or beyond the window,
+/// the one at `hi` starts beyond it).
+struct Span {
+    vs: Range<usize>,
+    es: Range<usize>,
+}
+
+impl Span {
+    fn of((lo, hi): (usize, usize), n: usize) -> Span {
+        Span {
+            vs: lo..hi,
+            es: lo.saturating_sub(1)..hi.min(n - 1),
+        }
+    }
+
+    /// The blocks of `size` vertices holding a vertex or an edge of the span.
+    fn blocks(&self, size: usize) -> Range<usize> {
+        let first = self.vs.start.min(self.es.start);
+        let end = self.vs.end.max(self.es.end);
+        if self.vs.is_empty() && self.es.is_empty() {
+            0..0
+        } else {
+            first / size..(end - 1) / size + 1
+        }
+    }
+
+    /// The span's vertices and edges in fine block `k`.
+    fn within(&self, k: usize) -> (Range<usize>, Range<usize>) {
+        let (s, e) = (k * BLOCK, (k + 1) * BLOCK);
+        let cut = |r: &Range<usize>| r.start.max(s)..r.end.min(e).max(r.start.max(s));
+        (cut(&self.vs), cut(&self.es))
+    }
 }
 
 /// Whether the squared distance from `v` to the line through `a` and `c` is certainly greater than

@@ -36,7 +36,7 @@ use polydist_polygon::{Feature, SimplePolygon};
 
 use std::borrow::Cow;
 
-use crate::brute::{Winner, scan_windowed};
+use crate::brute::{Keys, Winner, scan_windowed};
 use crate::result::ClosestPair;
 
 /// The monotone sweep's answer: the pair, with internal features of `P` and `Q` (edge `e` joins
@@ -133,7 +133,7 @@ pub(crate) fn sweep_chains<K: Kernel>(
 }
 
 /// [`scan_windowed`] on two chains listed in non-decreasing order of `t` along the line through
-/// `a` and `b`: their keys, the window, the [`budget`]. The winner and the candidates tried.
+/// `a` and `b`: their keys, the [`Lens`], the [`budget`]. The winner and the candidates tried.
 fn keyed<K: Kernel>(
     fp: &[DVec2],
     fq: &[DVec2],
@@ -141,14 +141,9 @@ fn keyed<K: Kernel>(
     b: DVec2,
     cut: f64,
 ) -> Option<(Winner, usize)> {
-    let (tp, tq, slack) = keys(fp, fq, a, b)?;
-    let u = b - a;
-    let len = (u.x * u.x + u.y * u.y).sqrt();
-    if !len.is_finite() {
-        return None;
-    }
-    let width = |u2: f64| window(u2, len, slack);
-    scan_windowed::<K>(fp, fq, &tp, &tq, width, cut, budget(fp.len() + fq.len()))
+    let (kp, kq, lens) = keys(fp, fq, a, b)?;
+    let (kp, kq) = (Keys { t: &kp.0, d: &kp.1 }, Keys { t: &kq.0, d: &kq.1 });
+    scan_windowed::<K>(fp, fq, kp, kq, &lens, cut, budget(fp.len() + fq.len()))
 }
 
 /// How the chain `c` runs along the line through `a` and `b`: `Some(false)` when `t` never
@@ -195,18 +190,55 @@ fn sweep<K: Kernel>(
     Some(Swept { pair, tried })
 }
 
-/// The window `W` for a best candidate whose squared distance is at most `u2`, with `len = fl(|û|)`
-/// and the keys' error bound `slack = E`: `fl(t̂_y − t̂_x) > W` implies `|t(y) − t(x)| > U·|b − a|`
-/// for `U = √u2`, so the pair is farther apart than the best.
-///
-/// Why. `W ≥ U·|b − a| + 2E` after every rounding: the computed `√u2·len` is within a few `u` of
-/// `U·|b − a|` (`û = fl(b − a)` is within `u` of `b − a` in each coordinate), far inside the relative
-/// `2⁻⁴⁰`; `4E` covers the two keys' errors (`2E`) and the rounding of their difference (at most
-/// `u` of it, which `fl(t̂_y − t̂_x) > W` keeps below the spare `2E` and the relative widening);
-/// `2⁻¹⁰⁰⁰` covers underflow. `∞` when `u2` is not finite.
-fn window(u2: f64, len: f64, slack: f64) -> f64 {
-    let w = u2.sqrt() * len * (1.0 + WIDEN) + 4.0 * slack + TINY;
-    if w.is_nan() { f64::INFINITY } else { w }
+/// The error analysis of the sweep's keys ([`keys`]): with `len = fl(|û|)`, `len2 = fl(|û|²)` and
+/// the keys' error bound `slack = E`, the tests [`scan_windowed`] skips candidates by.
+pub(crate) struct Lens {
+    len: f64,
+    len2: f64,
+    slack: f64,
+}
+
+impl Lens {
+    /// The window `W` for a best candidate whose squared distance is at most `u2`:
+    /// `fl(t̂_y − t̂_x) > W` implies `|t(y) − t(x)| > U·|b − a|` for `U = √u2`, so the pair is
+    /// farther apart than the best.
+    ///
+    /// Why. `W ≥ U·|b − a| + 2E` after every rounding: the computed `√u2·len` is within a few `u`
+    /// of `U·|b − a|` (`û = fl(b − a)` is within `u` of `b − a` in each coordinate), far inside the
+    /// relative `2⁻⁴⁰`; `4E` covers the two keys' errors (`2E`) and the rounding of their difference
+    /// (at most `u` of it, which `fl(t̂_y − t̂_x) > W` keeps below the spare `2E` and the relative
+    /// widening); `2⁻¹⁰⁰⁰` covers underflow. `∞` when `u2` is not finite.
+    pub(crate) fn window(&self, u2: f64) -> f64 {
+        let w = u2.sqrt() * self.len * (1.0 + WIDEN) + 4.0 * self.slack + TINY;
+        if w.is_nan() { f64::INFINITY } else { w }
+    }
+
+    /// A lower bound of the exact gap between two intervals of exact keys, given intervals of their
+    /// computed keys `x` and `y` (each end within `E` of its exact key): `fl(gap − 4E)`, or 0.
+    ///
+    /// Why. The exact gap is at least the computed ends' gap less `2E`. That gap's rounding is at
+    /// most `u` of it, and every key is at most about `max(|p̂ₓ| + |p̂ᵧ|)` in magnitude while
+    /// `E ≥ 8u` times that, so the rounding is below `E/3`, and so is the rounding of the
+    /// subtraction of `4E`: the result is at most the exact gap less `E`.
+    #[inline]
+    pub(crate) fn gap(&self, x: (f64, f64), y: (f64, f64)) -> f64 {
+        let g = (y.0 - x.1).max(x.0 - y.1) - 4.0 * self.slack;
+        if g > 0.0 { g } else { 0.0 }
+    }
+
+    /// Whether two sets of points whose exact keys are at least `gt` apart along the line and `gd`
+    /// apart across it (lower bounds from [`Lens::gap`]) are certainly farther apart than `√u2`.
+    ///
+    /// Why. For points `x`, `y` and `u = b − a`, `|x − y|²·|u|² = ((y − x)·u)² + ((y − x)×u)²
+    /// = Δt² + Δd²` (Lagrange's identity), so the squared distance of any two points of the sets is
+    /// at least `(gt² + gd²)/|u|²`. The computed `gt² + gd²` is within `3u` of the exact one and
+    /// `2⁻¹⁰⁷³` of underflow, `len2` within `4u` of `|u|²`; the relative `2⁻⁴⁰` and the absolute
+    /// `2⁻¹⁰⁰⁰` cover both, so `fl(gt² + gd²)·(1 − 2⁻⁴⁰) > fl(u2·len2)·(1 + 2⁻⁴⁰) + 2⁻¹⁰⁰⁰` implies
+    /// `gt² + gd² > u2·|u|²`. Never when `u2` is not finite.
+    #[inline]
+    pub(crate) fn beyond(&self, gt: f64, gd: f64, u2: f64) -> bool {
+        (gt * gt + gd * gd) * (1.0 - WIDEN) > u2 * self.len2 * (1.0 + WIDEN) + TINY
+    }
 }
 
 /// `2⁻⁴⁰`: the relative widening of the window, far above the few roundings of its computation.
@@ -265,27 +297,42 @@ fn facing<K: Kernel>(v: &[DVec2], a: DVec2, b: DVec2, other_left: bool) -> Optio
         .then_some(chain)
 }
 
-/// The keys `t̂(v) = fl(fl(v − a)·fl(b − a))` of both chains, and `E` with `|t̂(v) − t(v)| ≤ E` for
-/// every vertex; `None` when a key or `E` is not finite.
+/// The keys of both chains, `t̂(v) = fl(fl(v − a)·fl(b − a))` along the line and
+/// `d̂(v) = fl(fl(v − a)×fl(b − a))` across it, and their [`Lens`], whose `E` bounds
+/// `|t̂(v) − t(v)|` and `|d̂(v) − d(v)|` for every vertex; `None` when a key, `E`, `|û|` or `|û|²`
+/// is not finite.
 ///
 /// Why `E` holds. With `d̂ = fl(v − a)`, `û = fl(b − a)` and the products `p̂ₓ = fl(d̂ₓûₓ)`,
-/// `p̂ᵧ = fl(d̂ᵧûᵧ)`, each product is within `(1 + u)³ − 1` relative of the exact `dₓuₓ` (three
-/// roundings), and the sum adds `u(|p̂ₓ| + |p̂ᵧ|)`. So `|t̂ − t| ≤ 4.01u·(|p̂ₓ| + |p̂ᵧ|)`, and
-/// `E = 8u·max fl(|p̂ₓ| + |p̂ᵧ|) + 2⁻¹⁰⁰⁰` is above it (the sum's own rounding is inside the factor
-/// two; a product that underflows is off by at most `2⁻¹⁰⁷⁴`).
-fn keys(fp: &[DVec2], fq: &[DVec2], a: DVec2, b: DVec2) -> Option<(Vec<f64>, Vec<f64>, f64)> {
+/// `p̂ᵧ = fl(d̂ᵧûᵧ)` (for `t`; `fl(d̂ₓûᵧ)` and `fl(d̂ᵧûₓ)` for `d`), each product is within
+/// `(1 + u)³ − 1` relative of the exact one (three roundings), and the sum or difference adds
+/// `u(|p̂ₓ| + |p̂ᵧ|)`. So the error is at most `4.01u·(|p̂ₓ| + |p̂ᵧ|)`, and
+/// `E = 8u·max fl(|p̂ₓ| + |p̂ᵧ|) + 2⁻¹⁰⁰⁰` (the maximum over both keys of every vertex) is above it
+/// (the sum's own rounding is inside the factor two; a product that underflows is off by at most
+/// `2⁻¹⁰⁷⁴`).
+type KeyPair = (Vec<f64>, Vec<f64>);
+fn keys(fp: &[DVec2], fq: &[DVec2], a: DVec2, b: DVec2) -> Option<(KeyPair, KeyPair, Lens)> {
     let u = b - a;
     let mut worst = 0.0f64;
     let mut key = |v: &DVec2| {
         let d = *v - a;
         let (x, y) = (d.x * u.x, d.y * u.y);
-        worst = worst.max(x.abs() + y.abs());
-        x + y
+        let (c, e) = (d.x * u.y, d.y * u.x);
+        worst = worst.max(x.abs() + y.abs()).max(c.abs() + e.abs());
+        (x + y, c - e)
     };
-    let tp: Vec<f64> = fp.iter().map(&mut key).collect();
-    let tq: Vec<f64> = fq.iter().map(&mut key).collect();
+    let kp: KeyPair = fp.iter().map(&mut key).unzip();
+    let kq: KeyPair = fq.iter().map(&mut key).unzip();
     let slack = EIGHT_U * worst + TINY;
-    (slack.is_finite() && tp.iter().chain(&tq).all(|t| t.is_finite())).then_some((tp, tq, slack))
+    let len2 = u.x * u.x + u.y * u.y;
+    let lens = Lens {
+        len: len2.sqrt(),
+        len2,
+        slack,
+    };
+    let finite = [&kp.0, &kp.1, &kq.0, &kq.1]
+        .iter()
+        .all(|k| k.iter().all(|t| t.is_finite()));
+    (finite && slack.is_finite() && len2.is_finite()).then_some((kp, kq, lens))
 }
 
 /// The internal feature of a facing chain's local feature: vertex `k` is `chain[k]`, edge `k` the
@@ -405,16 +452,157 @@ mod tests {
         );
     }
 
-    /// Every key is within `E` of the exact `t(v)`, and a pair the window leaves out is farther
-    /// apart along the line than `U·|b − a|` (squared: `(t(y) − t(x))² > U²·|b − a|²`, exactly).
+    /// The sweep on dense chains, whose windows along the line hold dozens to hundreds of
+    /// vertices and are thinned by the blocks' and the candidates' own boxes of keys: the exact
+    /// scan's nearest pair, on corridors (walls a smooth curve apart, sampled far more finely than
+    /// the clearance), on lattice walls with repeated depths and ties, and on crowded clusters
+    /// (whose windows exceed the budget: the sweep must then decline). Most corridors are answered
+    /// with far fewer candidates than their windows along the line hold.
+    #[test]
+    fn dense_chains_are_the_exact_scan() {
+        use crate::brute::scan_winner_below;
+        use polydist_predicates::{Dist2, Exact, Robust};
+        use std::cmp::Ordering;
+        let mut rng = SplitMix64::new(0xb10c);
+        let (mut swept, mut crowded, mut thinned, mut declined) = (0, 0, 0, 0);
+        for round in 0..240 {
+            let d = loop {
+                let d = DVec2::new(rng.range_i64(-3, 4) as f64, rng.range_i64(-3, 4) as f64);
+                if d != DVec2::ZERO {
+                    break d;
+                }
+            };
+            let perp = DVec2::new(-d.y, d.x);
+            let a = DVec2::new(rng.range_i64(-9, 10) as f64, rng.range_i64(-9, 10) as f64);
+            let kind = round % 3;
+            let n = 100 + rng.index(240);
+            let step = [1.0 / 64.0, 1.0 / 16.0, 1.0 / 4.0][rng.index(3)];
+            let (amp, phase) = (rng.unit_f64(), rng.unit_f64() * 6.0);
+            let gap = [1.0, 2.0, 0.5][rng.index(3)];
+            // Depth of the wall at position `s` along the line, on side `side`.
+            let wall = |rng: &mut SplitMix64, s: f64, side: f64, shift: f64| -> f64 {
+                match kind {
+                    // A smooth corridor, gently rounded to a dyadic grid.
+                    0 => {
+                        let h = amp * (s * 0.7 + phase + shift).sin() * 0.5;
+                        side * (gap / 2.0 + side * h)
+                    }
+                    // Lattice walls: depths on a quarter grid, repeated and tied.
+                    1 => side * (gap / 2.0 + rng.below(3) as f64 * 0.25),
+                    // (Unused: clusters are built below.)
+                    _ => side * gap / 2.0,
+                }
+            };
+            let chain = |rng: &mut SplitMix64, side: f64, shift: f64| -> Vec<DVec2> {
+                let start = rng.range_i64(-4, 1) as f64;
+                let mut c: Vec<DVec2> = (0..n)
+                    .map(|i| {
+                        let s = start + i as f64 * step;
+                        a + d * s + perp * wall(rng, s, side, shift)
+                    })
+                    .collect();
+                c.dedup();
+                if rng.coin() {
+                    c.reverse();
+                }
+                c
+            };
+            let (p, q) = if kind == 2 {
+                // A cluster of `n` vertices 2⁻⁴⁰ apart along the line, and an arc of radius `gap`
+                // around it from 60° to 120°: every pair is within about 10⁻¹⁰ of the clearance,
+                // every block's box of keys reaches nearer than it, and the windows hold the whole
+                // arc, so the count exceeds the budget.
+                let (du, pu) = (d / d.length(), perp / perp.length());
+                let p: Vec<DVec2> = (0..n)
+                    .map(|i| a + du * (i as f64 * 2f64.powi(-40)))
+                    .collect();
+                let q: Vec<DVec2> = (0..n)
+                    .map(|j| {
+                        let th = (60.0 + 60.0 * j as f64 / (n - 1) as f64).to_radians();
+                        a + du * (gap * th.cos()) - pu * (gap * th.sin())
+                    })
+                    .collect();
+                (p, q)
+            } else {
+                (chain(&mut rng, 1.0, 0.0), chain(&mut rng, -1.0, 1.3))
+            };
+            let Some((kp, kq, _)) = keys(&p, &q, a, a + d) else {
+                panic!("finite keys");
+            };
+            let read = |c: &[DVec2], k: &KeyPair| {
+                if k.0.first() <= k.0.last() {
+                    (c.to_vec(), false)
+                } else {
+                    (c.iter().rev().copied().collect(), true)
+                }
+            };
+            let ((fp, rp), (fq, rq)) = (read(&p, &kp), read(&q, &kq));
+            let Some((w, tried)) = keyed::<Robust>(&fp, &fq, a, a + d, f64::INFINITY) else {
+                declined += 1;
+                continue;
+            };
+            let w = w.reversed(rp.then_some(p.len()), rq.then_some(q.len()));
+            swept += 1;
+            let dist = |(fp, fq): (Feature, Feature)| match (fp, fq) {
+                (Feature::Vertex(i), Feature::Vertex(j)) => Dist2::PointPoint(p[i], q[j]),
+                (Feature::Vertex(i), Feature::Edge(j)) => Dist2::PointSegment(p[i], q[j], q[j + 1]),
+                (Feature::Edge(i), Feature::Vertex(j)) => Dist2::PointSegment(q[j], p[i], p[i + 1]),
+                _ => unreachable!("a scan's winner has a vertex"),
+            };
+            let scan = scan_winner_below::<Exact>(&p, &q, f64::INFINITY).0;
+            let (got, want) = (dist(w.features()), dist(scan.features()));
+            assert_eq!(
+                Exact::cmp_dist2(got, want),
+                Ordering::Equal,
+                "round {round}: {p:?} {q:?} {a:?} {d:?}"
+            );
+            // The window along the line alone: every vertex pair within the clearance along it.
+            let u = w.pair().distance;
+            let along = p
+                .iter()
+                .map(|x| {
+                    q.iter()
+                        .filter(|y| ((*y - *x).dot(d) / d.length()).abs() <= u)
+                        .count()
+                })
+                .sum::<usize>();
+            if kind == 0 && along > 8 * (p.len() + q.len()) {
+                crowded += 1;
+                if tried * 2 < along {
+                    thinned += 1;
+                }
+            }
+        }
+        eprintln!(
+            "dense chains: {swept} swept ({crowded} corridors crowded along the line, {thinned} \
+             of them with fewer than half those candidates), {declined} declined"
+        );
+        assert!(
+            swept >= 120 && crowded >= 20 && thinned * 10 >= crowded * 9 && declined >= 60,
+            "{swept} {crowded} {thinned} {declined}"
+        );
+    }
+
+    /// Every key is within `E` of the exact `t(v)` and `d(v)`, a pair the window leaves out is
+    /// farther apart along the line than `U·|b − a|` (squared: `(t(y) − t(x))² > U²·|b − a|²`,
+    /// exactly), and a vertex and a vertex, an edge or a box of several vertices that
+    /// [`Lens::beyond`] puts farther than `U` are (exact squared distances).
     #[test]
     fn keys_and_window_hold_their_bounds() {
+        use num_traits::ToPrimitive;
+        use polydist_predicates::exact::{
+            squared_distance_point_point, squared_distance_point_segment,
+        };
         let mut rng = SplitMix64::new(0x6e75);
         let r = |x: f64| to_rational(x).expect("finite");
         let exact_key = |v: DVec2, a: DVec2, b: DVec2| {
             (r(v.x) - r(a.x)) * (r(b.x) - r(a.x)) + (r(v.y) - r(a.y)) * (r(b.y) - r(a.y))
         };
+        let exact_depth = |v: DVec2, a: DVec2, b: DVec2| {
+            (r(v.x) - r(a.x)) * (r(b.y) - r(a.y)) - (r(v.y) - r(a.y)) * (r(b.x) - r(a.x))
+        };
         let (mut skipped, mut kept) = (0, 0);
+        let (mut beyond, mut near) = (0, 0);
         for round in 0..1_500 {
             let class = round % 6;
             let (a, b) = (point(&mut rng, class), point(&mut rng, class));
@@ -423,24 +611,26 @@ mod tests {
             }
             let fp: Vec<DVec2> = (0..4).map(|_| point(&mut rng, class)).collect();
             let fq: Vec<DVec2> = (0..4).map(|_| point(&mut rng, class)).collect();
-            let Some((tp, tq, slack)) = keys(&fp, &fq, a, b) else {
+            let Some((kp, kq, lens)) = keys(&fp, &fq, a, b) else {
                 panic!("finite keys for {fp:?} {fq:?} {a:?} {b:?}");
             };
-            for (v, t) in fp.iter().zip(&tp).chain(fq.iter().zip(&tq)) {
-                let err = r(*t) - exact_key(*v, a, b);
-                assert!(err <= r(slack) && -err <= r(slack), "{v:?} {a:?} {b:?}");
+            let (tp, tq) = (&kp.0, &kq.0);
+            let all = fp.iter().zip(kp.0.iter().zip(&kp.1));
+            for (v, (t, d)) in all.chain(fq.iter().zip(kq.0.iter().zip(&kq.1))) {
+                for err in [r(*t) - exact_key(*v, a, b), r(*d) - exact_depth(*v, a, b)] {
+                    let e = r(lens.slack);
+                    assert!(err <= e && -err <= e, "{v:?} {a:?} {b:?}");
+                }
             }
-            let u = b - a;
-            let len = (u.x * u.x + u.y * u.y).sqrt();
             let u2exact =
                 (r(b.x) - r(a.x)) * (r(b.x) - r(a.x)) + (r(b.y) - r(a.y)) * (r(b.y) - r(a.y));
-            for (x, tx) in fp.iter().zip(&tp) {
-                for (y, ty) in fq.iter().zip(&tq) {
+            for (x, tx) in fp.iter().zip(tp) {
+                for (y, ty) in fq.iter().zip(tq) {
                     // Candidate distances: a fraction of the key gap itself, so that both answers occur.
-                    let gap = ((ty - tx) / len).abs();
+                    let gap = ((ty - tx) / lens.len).abs();
                     for f in [0.0, 0.5, 0.999_999, 1.0, 1.000_001, 2.0] {
                         let u2 = (gap * f) * (gap * f);
-                        let w = window(u2, len, slack);
+                        let w = lens.window(u2);
                         if ty - tx > w || tx - ty > w {
                             skipped += 1;
                             let d = exact_key(*y, a, b) - exact_key(*x, a, b);
@@ -451,7 +641,66 @@ mod tests {
                     }
                 }
             }
+            // Boxes: a `P` vertex against one `Q` vertex, one `Q` edge, or all of `Q` (a block).
+            let span = |ks: &[f64]| {
+                ks.iter()
+                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &k| {
+                        (lo.min(k), hi.max(k))
+                    })
+            };
+            // Now and then `Q` a cluster within about `10⁻⁷` of a `P` vertex, far from `a` and `b`
+            // compared with its size: the keys' errors are then a large share of the gaps.
+            let (fq, kq) = if round % 3 == 0 {
+                let c = fp[0];
+                let s = 1e-7 * (c.x.abs() + c.y.abs()).max(1e-300);
+                let fq: Vec<DVec2> = (0..4)
+                    .map(|_| c + DVec2::new(rng.unit_f64() - 0.5, rng.unit_f64() - 0.5) * s)
+                    .collect();
+                let Some((_, kq, _)) = keys(&fp, &fq, a, b) else {
+                    panic!("finite keys for {fp:?} {fq:?} {a:?} {b:?}");
+                };
+                (fq, kq)
+            } else {
+                (fq, kq)
+            };
+            for (i, x) in fp.iter().enumerate() {
+                let (tx, dx) = (kp.0[i], kp.1[i]);
+                for (lo, hi) in [(0, 0), (1, 2), (2, 3), (0, 3)] {
+                    let (bt, bd) = (span(&kq.0[lo..=hi]), span(&kq.1[lo..=hi]));
+                    let (gt, gd) = (lens.gap((tx, tx), bt), lens.gap((dx, dx), bd));
+                    // The nearest exact squared distance of the box's vertices and edges.
+                    let nearest = (lo..=hi)
+                        .map(|k| squared_distance_point_point(*x, fq[k]).expect("finite"))
+                        .chain((lo..hi).map(|k| {
+                            squared_distance_point_segment(*x, fq[k], fq[k + 1]).expect("finite")
+                        }))
+                        .min()
+                        .expect("a vertex");
+                    // Candidate distances around the gaps' own and next to the exact one, so that
+                    // both answers occur.
+                    let g2 = (gt * gt + gd * gd) / lens.len2;
+                    let at = nearest.to_f64().expect("finite");
+                    let next = |x: f64, up: bool| {
+                        let bits = x.to_bits();
+                        f64::from_bits(if up { bits + 1 } else { bits.saturating_sub(1) })
+                    };
+                    let around = [next(at, false), at, next(at, true)];
+                    for u2 in [0.0, 0.25, 0.999_999, 1.0, 1.000_001, 4.0]
+                        .map(|f| g2 * f)
+                        .into_iter()
+                        .chain(around)
+                    {
+                        if lens.beyond(gt, gd, u2) {
+                            beyond += 1;
+                            assert!(nearest > r(u2), "{x:?} {:?} {u2}", &fq[lo..=hi]);
+                        } else {
+                            near += 1;
+                        }
+                    }
+                }
+            }
         }
         assert!(skipped > 15_000 && kept > 15_000, "{skipped} {kept}");
+        assert!(beyond > 20_000 && near > 20_000, "{beyond} {near}");
     }
 }

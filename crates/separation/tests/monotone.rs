@@ -775,28 +775,46 @@ fn zigzags(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
     (p, q)
 }
 
-/// Crowded windows: the sweep gives up within its budget and section 3 answers; the answer's
-/// features realize the brute force's exact distance.
-#[test]
-fn crowded_windows_exhaust_the_budget() {
-    let (p, q) = zigzags(1600);
+/// A tiny zigzag cluster of `n` vertices (`2^−30` apart) at the origin, on top of a triangle, and
+/// an arc of `n` vertices of radius 1 around it (from 120° to 60°), the bottom of a cap: every arc
+/// vertex is within about `10^−8` of the clearance from every cluster vertex, so no depth or block
+/// test can thin the windows, which hold the whole arc.
+fn cluster_and_arc(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
+    let s = 2f64.powi(-30);
+    let mut p = vec![DVec2::new(-1.0, -3.0), DVec2::new(1.0, -3.0)];
+    p.extend(
+        (0..n)
+            .rev()
+            .map(|i| DVec2::new((i as f64 - n as f64 / 2.0) * s, (i % 2) as f64 * s / 4.0)),
+    );
+    let mut q: Vec<DVec2> = (0..n)
+        .map(|i| {
+            let a = (120.0 - 60.0 * i as f64 / (n - 1) as f64).to_radians();
+            DVec2::new(a.cos(), a.sin())
+        })
+        .collect();
+    q.push(DVec2::new(0.5, 3.0));
+    q.push(DVec2::new(-0.5, 3.0));
+    (p, q)
+}
+
+/// σ by the route and by the brute force: the same exact distance of their features.
+fn agrees_with_brute(p: &[DVec2], q: &[DVec2]) -> (Route, SeparationStats) {
     let (sp, sq) = (
-        SimplePolygon::try_new(&p).unwrap(),
-        SimplePolygon::try_new(&q).unwrap(),
+        SimplePolygon::try_new(p).unwrap(),
+        SimplePolygon::try_new(q).unwrap(),
     );
     assert!(hulls_disjoint(&sp, &sq));
     let lines = sweepable_lines(&sp, &sq);
     assert!(
         lines.lines >= 1 && lines.monotone == lines.lines,
-        "the zigzags' facing chains are monotone: {lines:?}"
+        "the facing chains are monotone: {lines:?}"
     );
     let Ok(PolygonSeparation::Separated { pair, route, stats }) =
         separation_of_disjoint::<Robust>(&sp, &sq)
     else {
         panic!("disjoint")
     };
-    assert_eq!(route, Route::SeparableChains);
-    assert_eq!(stats.sweep_candidates, 0);
     let Ok(PolygonSeparation::Separated { pair: brute, .. }) =
         polygon_separation_brute::<Robust>(&sp, &sq)
     else {
@@ -804,8 +822,8 @@ fn crowded_windows_exhaust_the_budget() {
     };
     let sq_of = |c: &ClosestPair| {
         feature_sq_dist(
-            &p,
-            &q,
+            p,
+            q,
             oracle_feature(c.feature_p),
             oracle_feature(c.feature_q),
         )
@@ -813,6 +831,34 @@ fn crowded_windows_exhaust_the_budget() {
     };
     assert_eq!(sq_of(&pair), sq_of(&brute), "{pair:?} vs {brute:?}");
     assert!((pair.distance - brute.distance).abs() <= 4.0 * f64::EPSILON * brute.distance);
+    (route, stats)
+}
+
+/// Crowded windows: the sweep gives up within its budget and section 3 answers; the answer's
+/// features realize the brute force's exact distance. Windows crowded along the line only (dense
+/// zigzags one unit apart, about two thousand candidates a window) are thinned by the depth and
+/// block tests and swept with a few candidates a vertex.
+#[test]
+fn crowded_windows_exhaust_the_budget() {
+    let (p, q) = cluster_and_arc(200);
+    let (route, stats) = agrees_with_brute(&p, &q);
+    assert_eq!(route, Route::SeparableChains);
+    assert_eq!(stats.sweep_candidates, 0);
+    let (p, q) = zigzags(1600);
+    let (far_route, far_stats) = agrees_with_brute(&p, &q);
+    let n = (p.len() + q.len()) as f64;
+    eprintln!(
+        "cluster and arc -> {route:?}; zigzags one unit apart -> {far_route:?} with {} candidates \
+         ({:.2} per vertex)",
+        far_stats.sweep_candidates,
+        far_stats.sweep_candidates as f64 / n
+    );
+    assert_eq!(far_route, Route::MonotoneSweep);
+    assert!(
+        far_stats.sweep_candidates as f64 <= 8.0 * n,
+        "{} candidates for {n} vertices",
+        far_stats.sweep_candidates
+    );
     // The same zigzags a thousandth of the gap apart fit the budget: the sweep answers.
     let (p2, mut q2) = zigzags(1600);
     for v in &mut q2 {
@@ -906,6 +952,76 @@ fn sawteeth_candidates_per_vertex_stay_bounded() {
     let at64 = ratios.iter().find(|r| r.0 == 64).unwrap().1;
     let last = ratios.last().unwrap().1;
     assert!(last <= 1.1 * at64, "candidates per vertex grow: {ratios:?}");
+}
+
+/// Two wavy walls one unit and a half apart (amplitude a quarter, a common period, a phase apart),
+/// sampled `n` times over 32 units: from 16 to 512 vertices within the clearance along the line,
+/// so the windows along it are crowded, but the walls' depths rule out all but a few candidates.
+fn wavy_walls(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
+    let w = 32.0;
+    let x = |i: usize| w * i as f64 / n as f64;
+    let wave = |x: f64, phase: f64| 0.25 * (x * 0.8 + phase).sin();
+    let mut p = vec![DVec2::new(0.0, -2.0), DVec2::new(w, -2.0)];
+    p.extend((0..=n).rev().map(|i| DVec2::new(x(i), wave(x(i), 0.0))));
+    let mut q: Vec<DVec2> = (0..=n)
+        .map(|i| DVec2::new(x(i), 1.5 + wave(x(i), 0.9)))
+        .collect();
+    q.push(DVec2::new(w, 4.5));
+    q.push(DVec2::new(0.0, 4.5));
+    (p, q)
+}
+
+/// Walls sampled far more finely than their clearance: the sweep answers them (not section 3),
+/// with a bounded number of candidates a vertex that does not grow with the sampling, though the
+/// windows along the line grow to hundreds of vertices; its distance is section 3's (all sizes)
+/// and the oracle's (small sizes).
+#[test]
+fn corridor_candidates_per_vertex_stay_bounded() {
+    let mut ratios = Vec::new();
+    for n in [512usize, 2048, 8192, 16384] {
+        let (p, q) = wavy_walls(n);
+        let (sp, sq) = (
+            SimplePolygon::try_new(&p).unwrap(),
+            SimplePolygon::try_new(&q).unwrap(),
+        );
+        assert!(hulls_disjoint(&sp, &sq));
+        let Ok(PolygonSeparation::Separated { pair, route, stats }) =
+            separation_of_disjoint::<Robust>(&sp, &sq)
+        else {
+            panic!("disjoint")
+        };
+        assert_eq!(route, Route::MonotoneSweep, "n = {n}");
+        let total = (p.len() + q.len()) as f64;
+        let ratio = stats.sweep_candidates as f64 / total;
+        eprintln!(
+            "wavy walls n={n}: {} candidates ({ratio:.3} per vertex)",
+            stats.sweep_candidates
+        );
+        assert!(ratio <= 8.0, "n = {n}: {ratio} candidates per vertex");
+        ratios.push(ratio);
+        let Ok(PolygonSeparation::Separated { pair: s3, .. }) =
+            separation_of_disjoint_with::<Robust>(&sp, &sq, HullRouteMethod::Section3)
+        else {
+            panic!("disjoint")
+        };
+        let sq_of = |c: &ClosestPair| {
+            feature_sq_dist(
+                &p,
+                &q,
+                oracle_feature(c.feature_p),
+                oracle_feature(c.feature_q),
+            )
+            .expect("features in range")
+        };
+        assert_eq!(sq_of(&pair), sq_of(&s3), "n = {n}: {pair:?} vs {s3:?}");
+        if n <= 512 {
+            check_optimal(&boundary_distance(&p, &q), &pair).unwrap();
+        }
+    }
+    assert!(
+        ratios.last().unwrap() <= &(1.5 * ratios[1]),
+        "candidates per vertex grow: {ratios:?}"
+    );
 }
 
 // ------------------------------------------------------------------------------------------------
