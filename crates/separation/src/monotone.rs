@@ -20,15 +20,19 @@
 //! **The sweep.** With both facing chains in order of `t`, a pair of points can only beat the best
 //! candidate `U` found so far if their `t` differ by at most `U·|b − a|`; [`scan_windowed`] tries
 //! each vertex against the other chain's vertices and edges in that window only, with the exact
-//! comparisons of the scans (`f64` bounds first, the kernel on overlap). The keys are `f64`
-//! approximations with a proven error bound ([`keys`]); the window is widened by it, so nothing a
+//! comparisons of the scans (`f64` bounds first, the kernel on overlap). Inside the window, the
+//! depth `d(v) = (v − a)×(b − a)` across the line thins the candidates: `|x − y|²·|b − a|² =
+//! Δt² + Δd²` (Lagrange's identity), so blocks of the other chain, and then single candidates,
+//! whose keys are too far apart in `t` and `d` together are skipped ([`Lens`]). The keys are `f64`
+//! approximations with a proven error bound ([`keys`]); every test is widened by it, so nothing a
 //! skipped pair could win is lost.
 //!
-//! **Linear, or section 3.** The sweep gives up when its windows hold more than
-//! `96·(|F_P| + |F_Q|) + 1024` candidates ([`budget`]; counted before any is tried, by moving the
-//! windows' ends alone: inputs with many vertices within the clearance along the line), and when a
-//! facing chain is not monotone: section 3 then answers, so the route stays `O(N)`. On saw-teeth
-//! facing each other the windows hold about three and a half candidates a vertex.
+//! **Linear, or section 3.** The sweep gives up when its work exceeds
+//! `96·(|F_P| + |F_Q|) + 1024` candidates ([`budget`]; counted before any is tried: the blocks its
+//! windows meet, then the candidates of the blocks not skipped; inputs whose candidates are nearly
+//! all at the clearance), and when a facing chain is not monotone: section 3 then answers, so the
+//! route stays `O(N)`. On saw-teeth facing each other the windows hold about three and a half
+//! candidates a vertex; on walls sampled far more finely than their clearance, a few.
 
 use glam::DVec2;
 use polydist_polygon::predicates::{Kernel, Orientation, Sign};
@@ -95,7 +99,9 @@ pub(crate) fn monotone_sweep_polyline<K: Kernel>(
 /// The sweep's budget for `n` vertices in all: `96n + 1024` candidates. A candidate costs a few
 /// dozen instructions (its `f64` bounds, rarely an exact sign), section 3 some 17,000 to 20,000 a
 /// vertex on the inputs measured, so even a sweep that runs out first wastes a small share; and
-/// crowded windows are found before any candidate is tried ([`scan_windowed`]).
+/// crowded windows are found before any candidate is tried ([`scan_windowed`]). Box tests of
+/// blocks are not candidates: the coarse blocks the windows meet are held to the same budget, and
+/// each costs at most nine box tests.
 pub(crate) fn budget(n: usize) -> usize {
     96 * n + 1024
 }
@@ -367,6 +373,30 @@ mod tests {
         }
     }
 
+    /// A line through a lattice point `a` along a non-zero lattice direction `d` (coordinates
+    /// within ±3), and `d` turned a quarter counter-clockwise.
+    fn lattice_line(rng: &mut SplitMix64) -> (DVec2, DVec2, DVec2) {
+        let d = loop {
+            let d = DVec2::new(rng.range_i64(-3, 4) as f64, rng.range_i64(-3, 4) as f64);
+            if d != DVec2::ZERO {
+                break d;
+            }
+        };
+        let a = DVec2::new(rng.range_i64(-9, 10) as f64, rng.range_i64(-9, 10) as f64);
+        (a, d, DVec2::new(-d.y, d.x))
+    }
+
+    /// The exact distance of a scan winner's features of the chains `p` and `q`.
+    fn winner_dist(p: &[DVec2], q: &[DVec2], f: (Feature, Feature)) -> polydist_predicates::Dist2 {
+        use polydist_predicates::Dist2;
+        match f {
+            (Feature::Vertex(i), Feature::Vertex(j)) => Dist2::PointPoint(p[i], q[j]),
+            (Feature::Vertex(i), Feature::Edge(j)) => Dist2::PointSegment(p[i], q[j], q[j + 1]),
+            (Feature::Edge(i), Feature::Vertex(j)) => Dist2::PointSegment(q[j], p[i], p[i + 1]),
+            _ => unreachable!("a scan's winner has a vertex"),
+        }
+    }
+
     /// `sweep_chains` against the exact scan on random chains monotone along a random lattice
     /// direction (either way, vertical steps and ties included, the chains free to overlap and
     /// cross), with and without a cut: the scan's nearest pair exactly when it beats the cut, a
@@ -379,14 +409,7 @@ mod tests {
         let mut rng = SplitMix64::new(0x5ee9);
         let (mut swept, mut below) = (0, 0);
         for round in 0..3_000 {
-            let d = loop {
-                let d = DVec2::new(rng.range_i64(-3, 4) as f64, rng.range_i64(-3, 4) as f64);
-                if d != DVec2::ZERO {
-                    break d;
-                }
-            };
-            let perp = DVec2::new(-d.y, d.x);
-            let a = DVec2::new(rng.range_i64(-9, 10) as f64, rng.range_i64(-9, 10) as f64);
+            let (a, d, perp) = lattice_line(&mut rng);
             let float = round % 4 == 3;
             let chain = |rng: &mut SplitMix64, shift: f64| -> Vec<DVec2> {
                 let k = 1 + rng.index(12);
@@ -422,12 +445,7 @@ mod tests {
                 continue;
             };
             swept += 1;
-            let dist = |(fp, fq): (Feature, Feature)| match (fp, fq) {
-                (Feature::Vertex(i), Feature::Vertex(j)) => Dist2::PointPoint(p[i], q[j]),
-                (Feature::Vertex(i), Feature::Edge(j)) => Dist2::PointSegment(p[i], q[j], q[j + 1]),
-                (Feature::Edge(i), Feature::Vertex(j)) => Dist2::PointSegment(q[j], p[i], p[i + 1]),
-                _ => unreachable!("a scan's winner has a vertex"),
-            };
+            let dist = |f: (Feature, Feature)| winner_dist(&p, &q, f);
             let got = dist(w.features());
             let scan = dist(
                 scan_winner_below::<Exact>(&p, &q, f64::INFINITY)
@@ -461,19 +479,12 @@ mod tests {
     #[test]
     fn dense_chains_are_the_exact_scan() {
         use crate::brute::scan_winner_below;
-        use polydist_predicates::{Dist2, Exact, Robust};
+        use polydist_predicates::{Exact, Robust};
         use std::cmp::Ordering;
         let mut rng = SplitMix64::new(0xb10c);
         let (mut swept, mut crowded, mut thinned, mut declined) = (0, 0, 0, 0);
         for round in 0..240 {
-            let d = loop {
-                let d = DVec2::new(rng.range_i64(-3, 4) as f64, rng.range_i64(-3, 4) as f64);
-                if d != DVec2::ZERO {
-                    break d;
-                }
-            };
-            let perp = DVec2::new(-d.y, d.x);
-            let a = DVec2::new(rng.range_i64(-9, 10) as f64, rng.range_i64(-9, 10) as f64);
+            let (a, d, perp) = lattice_line(&mut rng);
             let kind = round % 3;
             let n = 100 + rng.index(240);
             let step = [1.0 / 64.0, 1.0 / 16.0, 1.0 / 4.0][rng.index(3)];
@@ -487,10 +498,9 @@ mod tests {
                         let h = amp * (s * 0.7 + phase + shift).sin() * 0.5;
                         side * (gap / 2.0 + side * h)
                     }
-                    // Lattice walls: depths on a quarter grid, repeated and tied.
-                    1 => side * (gap / 2.0 + rng.below(3) as f64 * 0.25),
-                    // (Unused: clusters are built below.)
-                    _ => side * gap / 2.0,
+                    // Lattice walls: depths on a quarter grid, repeated and tied (clusters, kind
+                    // 2, are built below).
+                    _ => side * (gap / 2.0 + rng.below(3) as f64 * 0.25),
                 }
             };
             let chain = |rng: &mut SplitMix64, side: f64, shift: f64| -> Vec<DVec2> {
@@ -543,12 +553,7 @@ mod tests {
             };
             let w = w.reversed(rp.then_some(p.len()), rq.then_some(q.len()));
             swept += 1;
-            let dist = |(fp, fq): (Feature, Feature)| match (fp, fq) {
-                (Feature::Vertex(i), Feature::Vertex(j)) => Dist2::PointPoint(p[i], q[j]),
-                (Feature::Vertex(i), Feature::Edge(j)) => Dist2::PointSegment(p[i], q[j], q[j + 1]),
-                (Feature::Edge(i), Feature::Vertex(j)) => Dist2::PointSegment(q[j], p[i], p[i + 1]),
-                _ => unreachable!("a scan's winner has a vertex"),
-            };
+            let dist = |f: (Feature, Feature)| winner_dist(&p, &q, f);
             let scan = scan_winner_below::<Exact>(&p, &q, f64::INFINITY).0;
             let (got, want) = (dist(w.features()), dist(scan.features()));
             assert_eq!(

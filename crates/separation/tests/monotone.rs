@@ -859,7 +859,7 @@ fn crowded_windows_exhaust_the_budget() {
         "{} candidates for {n} vertices",
         far_stats.sweep_candidates
     );
-    // The same zigzags a thousandth of the gap apart fit the budget: the sweep answers.
+    // The same zigzags a thousandth of the gap apart: the sweep answers.
     let (p2, mut q2) = zigzags(1600);
     for v in &mut q2 {
         v.y -= 1.0 - 2f64.powi(-12);
@@ -878,26 +878,38 @@ fn crowded_windows_exhaust_the_budget() {
     };
     let n2 = p2.len() + q2.len();
     eprintln!(
-        "zigzags: far apart -> {route:?}; close -> {near_route:?} with {} candidates ({:.2} per vertex)",
+        "zigzags close -> {near_route:?} with {} candidates ({:.2} per vertex)",
         near_stats.sweep_candidates,
         near_stats.sweep_candidates as f64 / n2 as f64
     );
     assert_eq!(near_route, Route::MonotoneSweep);
-    let Ok(PolygonSeparation::Separated { pair: near3, .. }) =
-        separation_of_disjoint_with::<Robust>(&sp2, &sq2, HullRouteMethod::Section3)
+    agrees_with_section3(&p2, &q2, &near);
+}
+
+/// The pair `pair` found for `p` and `q` is as near as section 3's (exact squared distances of
+/// their features).
+fn agrees_with_section3(p: &[DVec2], q: &[DVec2], pair: &ClosestPair) {
+    let (sp, sq) = (
+        SimplePolygon::try_new(p).unwrap(),
+        SimplePolygon::try_new(q).unwrap(),
+    );
+    let Ok(PolygonSeparation::Separated {
+        pair: s3, route, ..
+    }) = separation_of_disjoint_with::<Robust>(&sp, &sq, HullRouteMethod::Section3)
     else {
         panic!("disjoint")
     };
-    let sq2_of = |c: &ClosestPair| {
+    assert_ne!(route, Route::MonotoneSweep);
+    let sq_of = |c: &ClosestPair| {
         feature_sq_dist(
-            &p2,
-            &q2,
+            p,
+            q,
             oracle_feature(c.feature_p),
             oracle_feature(c.feature_q),
         )
         .expect("features in range")
     };
-    assert_eq!(sq2_of(&near), sq2_of(&near3));
+    assert_eq!(sq_of(pair), sq_of(&s3), "{pair:?} vs {s3:?}");
 }
 
 // ------------------------------------------------------------------------------------------------
@@ -999,21 +1011,7 @@ fn corridor_candidates_per_vertex_stay_bounded() {
         );
         assert!(ratio <= 8.0, "n = {n}: {ratio} candidates per vertex");
         ratios.push(ratio);
-        let Ok(PolygonSeparation::Separated { pair: s3, .. }) =
-            separation_of_disjoint_with::<Robust>(&sp, &sq, HullRouteMethod::Section3)
-        else {
-            panic!("disjoint")
-        };
-        let sq_of = |c: &ClosestPair| {
-            feature_sq_dist(
-                &p,
-                &q,
-                oracle_feature(c.feature_p),
-                oracle_feature(c.feature_q),
-            )
-            .expect("features in range")
-        };
-        assert_eq!(sq_of(&pair), sq_of(&s3), "n = {n}: {pair:?} vs {s3:?}");
+        agrees_with_section3(&p, &q, &pair);
         if n <= 512 {
             check_optimal(&boundary_distance(&p, &q), &pair).unwrap();
         }
