@@ -460,42 +460,39 @@ pub(crate) fn scan_winner_below<K: Kernel>(p: &[DVec2], q: &[DVec2], cut: f64) -
 /// only: the bounds are those of the line distances). The winner and its squared distance's upper
 /// bound.
 fn scan_best<K: Kernel>(p: &[DVec2], q: &[DVec2], interior_only: bool, cut: f64) -> (Cand, f64) {
-    let mut best = Cand::Vv(0, 0);
-    let dist = |c: Cand| c.scan_dist(p, q, interior_only);
     // A candidate bounded strictly above the best cannot win, one bounded strictly below it wins:
     // only overlapping bounds (near ties) need the exact comparison.
-    let mut best_b = best.scan_bounds(p, q, interior_only);
-    let mut consider = |c: Cand| {
-        let b = c.scan_bounds(p, q, interior_only);
-        if b.0 > best_b.1 || b.0 > cut || !admitted::<K>(c, p, q, interior_only) {
-            return;
-        }
-        if b.1 < best_b.0 || cmp_scan::<K>(dist(c), dist(best)) == Ordering::Less {
-            best = c;
-            best_b = b;
-        }
-    };
-    for i in 0..p.len() {
-        for j in 0..q.len() {
-            // `Vv(0, 0)` is the initial best: against itself it is `Equal` under every kernel.
-            if i > 0 || j > 0 {
-                consider(Cand::Vv(i, j));
+    fn all<K: Kernel, const I: bool>(p: &[DVec2], q: &[DVec2], cut: f64) -> (Cand, f64) {
+        let mut best = Best::<K, I>::new(p, q, cut);
+        let mut consider = |c: Cand| best.consider(c);
+        for i in 0..p.len() {
+            for j in 0..q.len() {
+                // `Vv(0, 0)` is the initial best: against itself it is `Equal` under every kernel.
+                if i > 0 || j > 0 {
+                    consider(Cand::Vv(i, j));
+                }
             }
         }
-    }
-    for i in 0..p.len() {
-        for j in 0..q.len().saturating_sub(1) {
-            consider(Cand::PvQe(i, j));
+        for i in 0..p.len() {
+            for j in 0..q.len().saturating_sub(1) {
+                consider(Cand::PvQe(i, j));
+            }
         }
-    }
-    for j in 0..q.len() {
-        for i in 0..p.len().saturating_sub(1) {
-            consider(Cand::QvPe(j, i));
+        for j in 0..q.len() {
+            for i in 0..p.len().saturating_sub(1) {
+                consider(Cand::QvPe(j, i));
+            }
         }
+        // A vertex–edge candidate whose nearest point is an endpoint is never strictly better than
+        // that vertex–vertex pair, which was considered first: so the winner's foot is strictly
+        // inside.
+        (best.best, best.b.1)
     }
-    // A vertex–edge candidate whose nearest point is an endpoint is never strictly better than that
-    // vertex–vertex pair, which was considered first: so the winner's foot is strictly inside.
-    (best, best_b.1)
+    if interior_only {
+        all::<K, true>(p, q, cut)
+    } else {
+        all::<K, false>(p, q, cut)
+    }
 }
 
 /// A node of [`scan_pruned`]'s box hierarchy over a chain: it owns the vertices `s..e` and the
@@ -733,7 +730,7 @@ pub(crate) fn scan_windowed<K: Kernel>(
     {
         return None;
     }
-    let mut best = Swept::<K>::new(p, q, cut);
+    let mut best = Best::<K, true>::new(p, q, cut);
     let mut tried = 0usize;
     // The neighbours in key order.
     let (tp, tq) = (kp.t, kq.t);
@@ -815,8 +812,9 @@ pub(crate) fn scan_windowed<K: Kernel>(
     Some((best.best.winner(p, q), tried))
 }
 
-/// [`scan_windowed`]'s best candidate so far, with its exact distance and its bounds.
-struct Swept<'a, K> {
+/// The best candidate so far of a scan ([`scan`], [`scan_windowed`]), with its exact distance and
+/// its bounds.
+struct Best<'a, K, const INTERIOR_ONLY: bool> {
     p: &'a [DVec2],
     q: &'a [DVec2],
     cut: f64,
@@ -826,16 +824,16 @@ struct Swept<'a, K> {
     kernel: core::marker::PhantomData<K>,
 }
 
-impl<'a, K: Kernel> Swept<'a, K> {
+impl<'a, K: Kernel, const INTERIOR_ONLY: bool> Best<'a, K, INTERIOR_ONLY> {
     fn new(p: &'a [DVec2], q: &'a [DVec2], cut: f64) -> Self {
         let best = Cand::Vv(0, 0);
-        Swept {
+        Best {
             p,
             q,
             cut,
             best,
-            d: best.scan_dist(p, q, true),
-            b: best.scan_bounds(p, q, true),
+            d: best.scan_dist(p, q, INTERIOR_ONLY),
+            b: best.scan_bounds(p, q, INTERIOR_ONLY),
             kernel: core::marker::PhantomData,
         }
     }
@@ -846,15 +844,16 @@ impl<'a, K: Kernel> Swept<'a, K> {
         self.b.1.min(self.cut)
     }
 
-    /// Takes `c` when it is nearer than the best (exactly, after the bounds), as [`scan`] does.
+    /// Takes `c` when it is nearer than the best: skipped when bounded strictly above the best or
+    /// the cut, taken when bounded strictly below the best, compared exactly otherwise.
     #[inline]
     fn consider(&mut self, c: Cand) {
-        let (p, q) = (self.p, self.q);
-        let b = c.scan_bounds(p, q, true);
-        if b.0 > self.b.1 || b.0 > self.cut || !admitted::<K>(c, p, q, true) {
+        let (p, q, interior_only) = (self.p, self.q, INTERIOR_ONLY);
+        let b = c.scan_bounds(p, q, interior_only);
+        if b.0 > self.b.1 || b.0 > self.cut || !admitted::<K>(c, p, q, interior_only) {
             return;
         }
-        let d = c.scan_dist(p, q, true);
+        let d = c.scan_dist(p, q, interior_only);
         if b.1 < self.b.0 || cmp_scan::<K>(d, self.d) == Ordering::Less {
             self.best = c;
             self.d = d;
@@ -909,9 +908,12 @@ impl Keys<'_> {
     /// between them).
     #[inline]
     fn far(&self, lo: usize, hi: usize, (t, d): (f64, f64), lens: &Lens, u2: f64) -> bool {
-        let gt = lens.gap((t, t), hull(self.t[lo], self.t[hi]));
-        let gd = lens.gap((d, d), hull(self.d[lo], self.d[hi]));
-        lens.beyond(gt, gd, u2)
+        lens.apart(
+            (t, d),
+            hull(self.t[lo], self.t[hi]),
+            hull(self.d[lo], self.d[hi]),
+            u2,
+        )
     }
 }
 
@@ -960,7 +962,7 @@ impl Boxes {
     /// Whether every vertex and edge of block `k` is certainly farther than `√u2` from the vertex
     /// with keys `(t, d)`.
     fn beyond(&self, k: usize, (t, d): (f64, f64), lens: &Lens, u2: f64) -> bool {
-        lens.beyond(lens.gap((t, t), self.t[k]), lens.gap((d, d), self.d[k]), u2)
+        lens.apart((t, d), self.t[k], self.d[k], u2)
     }
 }
 

@@ -245,6 +245,14 @@ impl Lens {
     pub(crate) fn beyond(&self, gt: f64, gd: f64, u2: f64) -> bool {
         (gt * gt + gd * gd) * (1.0 - WIDEN) > u2 * self.len2 * (1.0 + WIDEN) + TINY
     }
+
+    /// Whether the points whose computed keys lie in the box `t × d` are certainly farther than
+    /// `√u2` from the point with computed keys `x` ([`Lens::gap`] along and across, then
+    /// [`Lens::beyond`]).
+    #[inline]
+    pub(crate) fn apart(&self, x: (f64, f64), t: (f64, f64), d: (f64, f64), u2: f64) -> bool {
+        self.beyond(self.gap((x.0, x.0), t), self.gap((x.1, x.1), d), u2)
+    }
 }
 
 /// `2⁻⁴⁰`: the relative widening of the window, far above the few roundings of its computation.
