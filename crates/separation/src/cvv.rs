@@ -74,7 +74,7 @@ impl<K: Kernel> CvvMatrix<K> {
     /// each chain; chains need not be monotone: this is the matrix of the CVV step of
     /// [`separation_of_chains`](crate::separation_of_chains)), the wedges by two hull scans per
     /// chain, Lemma 3, and the regions by two pointer scans per chain. `O(n_p + n_q)` exact degree-2
-    /// tests after the envelope (`O(n log n)` in the worst case, `O(n)` for monotone chains).
+    /// tests, the envelope's included.
     ///
     /// # Errors
     /// See [`separation_of_chains`](crate::separation_of_chains).

@@ -1,5 +1,5 @@
 //! Lemma 2 for general simple chains: the perpendicular-visibility envelope `P°` (Amato 1992,
-//! section 3), by divide and conquer over the chain, and its `O(n²)` brute-force twin.
+//! section 3), by one walk along the chain in `O(n)`, and its `O(n²)` brute-force twin.
 //!
 //! In the frame of the line (depth `X`, height `H`), `P°` is the graph of
 //! `f(y) = min{X(z) : z ∈ P, H(z) = y}` over the heights the chain covers. For a simple chain
@@ -15,11 +15,30 @@
 //!   `e_k` may end at the two heights (at `v_k` or at a vertex hidden behind it) or pass behind `v_k`
 //!   (a *shadow point*, kept as the symbolic root of `H(x) − H(v_k)` on `e_k`).
 //!
-//! The envelope of a sub-chain is merged from those of its two halves in time linear in their sizes
-//! (a merge of two height-sorted lists; in a common open slab the two edges are disjoint, so one
-//! orientation test orders them). Bottom-up over the chain this is `O(n log n)`; when the two halves
-//! cover height ranges that meet in at most one point (e.g. along a monotone stretch) the merge is a
-//! concatenation with `O(1)` predicates, so monotone chains cost `O(n)` predicates.
+//! # The scan
+//! Heights are compared lexicographically with depths (a symbolic shear `H' = H + εX`: orientation
+//! is unchanged, distinct points get distinct heights, no edge is perpendicular to the line). The
+//! walk keeps the envelope of the part walked so far as a linked list of its visible vertices, and
+//! either stands on it (its current vertex is a node) or is hidden behind it. A hidden walk can only
+//! come back into view where it went out of view:
+//!
+//! * it went behind a visible vertex `w` whose envelope edge `f` on one side passes behind `w`: the
+//!   *gap* `g`, the open segment from `w` to `f`'s point at `w`'s height, is crossed from its
+//!   visible side. The chain walked so far holds a path from `f`'s point to `w`; with `g` it bounds a
+//!   Jordan curve `Γ`. The visible side of `g` is outside `Γ` (a point there sees the line down a
+//!   ray that meets neither the chain nor `g`), so the walk, having crossed `g`, is inside `Γ`; it
+//!   cannot cross the chain, so it leaves `Γ` only back across `g`. Every other gap has its visible
+//!   side, hence itself, outside `Γ`. So the walk is hidden until an edge crosses `g` itself, one
+//!   test per edge;
+//! * or it went behind the top or bottom vertex from beyond the range (or turned back behind the
+//!   walk's previous edge at an end): then it comes back past one of the two ends of the range.
+//!
+//! While the walk is in view, its edge replaces the envelope node by node until it ends in front
+//! of it or goes behind a visible vertex (a new gap). Each edge costs `O(1)` tests plus one per node
+//! it removes for good, so the walk is `O(n)`. Nodes at one true height are then collapsed to the
+//! nearest (the first), and a closed chain's closing edge is merged in by one linear merge of two
+//! height-sorted envelopes. `docs/algorithms/separation.md` ("The linear scan") has the cases and
+//! the proofs.
 
 use core::cmp::Ordering;
 
@@ -69,9 +88,8 @@ impl Env<'_> {
     }
 }
 
-/// The envelopes of consecutive sub-chains stored back to back in one flat array (one round of the
-/// divide and conquer): envelope `s` is the range `segs[s]` of breakpoints. Two levels are reused in
-/// turn, so a round allocates nothing once the arrays have grown.
+/// Envelopes stored back to back in one flat array: envelope `s` is the range `segs[s]` of
+/// breakpoints (the scan's collapsed envelope and a closing edge's, merged into another).
 #[derive(Default)]
 struct Level {
     bps: Vec<Bp>,
@@ -84,11 +102,6 @@ impl Level {
             bps: Vec::with_capacity(n),
             segs: Vec::new(),
         }
-    }
-
-    fn clear(&mut self) {
-        self.bps.clear();
-        self.segs.clear();
     }
 
     #[inline]
@@ -119,6 +132,10 @@ struct Ctx<'a> {
     idx: &'a [usize],
     /// Each edge's lower and upper vertex, `None` for an edge perpendicular to the line.
     lohi: &'a [Option<(usize, usize)>],
+    /// Heights compared lexicographically, (height, depth): the scan's symbolic shear (see
+    /// [`scan`]), under which no two distinct points are at one height and no edge is
+    /// perpendicular to the line.
+    lex: bool,
 }
 
 /// Where the envelope computation found the chain not simple (or the kernel inconsistent): the
@@ -136,6 +153,22 @@ impl Ctx<'_> {
     fn ends(&self, e: usize) -> (usize, usize) {
         // Only non-perpendicular edges enter envelopes.
         self.lohi[e].unwrap_or((0, 0))
+    }
+
+    /// Compares the heights of vertices `p` and `q` (lexicographically with their depths under
+    /// the shear). Degree 2.
+    #[inline]
+    fn cmp_h<K: Kernel>(&self, p: usize, q: usize) -> Ordering {
+        cmp_heights::<K>(self.frame, self.v[p], self.v[q], self.lex)
+    }
+}
+
+/// Compares the heights of two points, ties broken by depth (nearer first) when `lex`.
+#[inline]
+fn cmp_heights<K: Kernel>(frame: Frame, p: DVec2, q: DVec2, lex: bool) -> Ordering {
+    match frame.cmp_height::<K>(p, q) {
+        Ordering::Equal if lex => frame.cmp_depth::<K>(p, q),
+        o => o,
     }
 }
 
@@ -159,7 +192,7 @@ fn edge_vs_edge<K: Kernel>(c: &Ctx<'_>, e1: usize, e2: usize) -> Result<Ordering
         return Ok(Ordering::Equal);
     }
     let ((a1, b1), (a2, b2)) = (c.ends(e1), c.ends(e2));
-    if c.frame.cmp_height::<K>(c.v[a1], c.v[a2]) == Ordering::Less {
+    if c.cmp_h::<K>(a1, a2) == Ordering::Less {
         return edge_vs_edge::<K>(c, e2, e1).map(Ordering::reverse);
     }
     // a1 is at least as high as a2 and below the top of e2: it is within e2's height range.
@@ -172,7 +205,7 @@ fn edge_vs_edge<K: Kernel>(c: &Ctx<'_>, e1: usize, e2: usize) -> Result<Ordering
         return Err(a1); // a1 lies on e2 without being its end: not simple
     }
     // A common bottom vertex: the lower top lies within the other edge's range.
-    if c.frame.cmp_height::<K>(c.v[b1], c.v[b2]) != Ordering::Greater {
+    if c.cmp_h::<K>(b1, b2) != Ordering::Greater {
         match c.frame.orient::<K>(c.v[a2], c.v[b2], c.v[b1]) {
             Sign::Positive => Ok(Ordering::Less),
             Sign::Negative => Ok(Ordering::Greater),
@@ -453,24 +486,303 @@ fn to_prepared<K: Kernel>(
     Ok(out)
 }
 
-fn orient_edges<K: Kernel>(frame: Frame, cl: &Clean) -> Vec<Option<(usize, usize)>> {
+fn orient_edges<K: Kernel>(frame: Frame, cl: &Clean, lex: bool) -> Vec<Option<(usize, usize)>> {
     cl.edges
         .iter()
-        .map(|&(u, w, _)| match frame.cmp_height::<K>(cl.v[u], cl.v[w]) {
-            Ordering::Less => Some((u, w)),
-            Ordering::Greater => Some((w, u)),
-            Ordering::Equal => None,
-        })
+        .map(
+            |&(u, w, _)| match cmp_heights::<K>(frame, cl.v[u], cl.v[w], lex) {
+                Ordering::Less => Some((u, w)),
+                Ordering::Greater => Some((w, u)),
+                Ordering::Equal => None,
+            },
+        )
         .collect()
+}
+
+/// No node: the end of the scan's list.
+const NIL: usize = usize::MAX;
+
+/// The envelope of the part of the chain walked so far, as a doubly linked list of its visible
+/// vertices in increasing (sheared) height, `up[u]` the edge between `u` and `next[u]`.
+struct List {
+    next: Vec<usize>,
+    prev: Vec<usize>,
+    up: Vec<usize>,
+    head: usize,
+    tail: usize,
+}
+
+impl List {
+    /// Links `b` (not in the list) between `lo` and `hi`, either of them [`NIL`] at an end.
+    fn link(&mut self, lo: usize, b: usize, hi: usize) {
+        self.prev[b] = lo;
+        self.next[b] = hi;
+        if lo == NIL {
+            self.head = b;
+        } else {
+            self.next[lo] = b;
+        }
+        if hi == NIL {
+            self.tail = b;
+        } else {
+            self.prev[hi] = b;
+        }
+    }
+
+    /// Unlinks `u`, keeping the edges of the others.
+    fn unlink(&mut self, u: usize) {
+        let (lo, hi) = (self.prev[u], self.next[u]);
+        if lo == NIL {
+            self.head = hi;
+        } else {
+            self.next[lo] = hi;
+        }
+        if hi == NIL {
+            self.tail = lo;
+        } else {
+            self.prev[hi] = lo;
+        }
+    }
+
+    /// The edge just below node `u`, [`NIL`] at the bottom.
+    fn down(&self, u: usize) -> usize {
+        if self.prev[u] == NIL {
+            NIL
+        } else {
+            self.up[self.prev[u]]
+        }
+    }
+}
+
+/// Where a hidden walk comes back into view.
+#[derive(Clone, Copy, Debug)]
+enum Exit {
+    /// Through the open segment from the visible vertex `w` to the point of edge `f` at `w`'s
+    /// height, `f` being the envelope's edge just above `w` (`up`) or just below it.
+    Gap { w: usize, up: bool, f: usize },
+    /// Past the top or the bottom of the envelope's height range.
+    Ends,
+}
+
+/// The state of the walk at its current vertex.
+#[derive(Clone, Copy, Debug)]
+enum Walk {
+    /// On the envelope, at this node.
+    Visible(usize),
+    /// Behind it.
+    Hidden(Exit),
+}
+
+/// The walk's edge `e` from the visible node `cur` toward `b` (upward when `up`), known to be
+/// nearer to the line than the envelope just beyond `cur` on that side: replaces the envelope
+/// while it stays in front, stopping at `b` or behind the first visible vertex nearer than it.
+/// Every step but the last removes a node for good.
+fn sweep<K: Kernel>(
+    c: &Ctx<'_>,
+    list: &mut List,
+    cur: usize,
+    e: usize,
+    b: usize,
+    up: bool,
+) -> Result<Walk, Bad> {
+    loop {
+        let nxt = if up { list.next[cur] } else { list.prev[cur] };
+        if nxt == NIL {
+            // Beyond the envelope's range: `e` alone there.
+            if up {
+                list.up[cur] = e;
+                list.up[b] = NIL;
+                list.link(cur, b, NIL);
+            } else {
+                list.up[b] = e;
+                list.link(NIL, b, cur);
+            }
+            return Ok(Walk::Visible(b));
+        }
+        let beyond = if up {
+            Ordering::Greater
+        } else {
+            Ordering::Less
+        };
+        if c.cmp_h::<K>(b, nxt) != beyond {
+            if c.cmp_h::<K>(b, nxt) == Ordering::Equal {
+                return Err(b); // two vertices at one point
+            }
+            // `e` ends before `nxt`, in front of the edge there, which passes behind `b`: one
+            // test confirms it (a `b` on that edge is a chain that is not simple).
+            let f = if up { list.up[cur] } else { list.up[nxt] };
+            if vertex_vs_edge::<K>(c, b, f)? != Ordering::Less {
+                return Err(b);
+            }
+            if up {
+                list.up[cur] = e;
+                list.up[b] = f;
+                list.link(cur, b, nxt);
+            } else {
+                list.up[b] = e;
+                list.link(nxt, b, cur);
+            }
+            return Ok(Walk::Visible(b));
+        }
+        match vertex_vs_edge::<K>(c, nxt, e)? {
+            Ordering::Less => {
+                // `nxt` is nearer: `e` goes behind it, the gap at `nxt` faces `cur`.
+                if up {
+                    list.up[cur] = e;
+                } else {
+                    list.up[nxt] = e;
+                }
+                return Ok(Walk::Hidden(Exit::Gap {
+                    w: nxt,
+                    up: !up,
+                    f: e,
+                }));
+            }
+            _ => {
+                // `nxt` is hidden, and `e` (nearer than `nxt` at its height) is nearer than the
+                // edge beyond it too.
+                if up {
+                    list.up[cur] = list.up[nxt];
+                }
+                list.unlink(nxt);
+                // Tentatively `cur` keeps the edge beyond the removed node (below it, that edge
+                // is already `up` of `cur`'s new neighbour); `e` is written when the sweep stops.
+            }
+        }
+    }
+}
+
+/// The walk's edge `e` toward `b`, behind the envelope and inside its height range at its start:
+/// in view again beyond `b` if `b` is past the end of the range it moves toward.
+fn past_the_ends<K: Kernel>(c: &Ctx<'_>, list: &mut List, e: usize, b: usize, up: bool) -> Walk {
+    if up && c.cmp_h::<K>(b, list.tail) == Ordering::Greater {
+        let t = list.tail;
+        list.up[t] = e;
+        list.up[b] = NIL;
+        list.link(t, b, NIL);
+        Walk::Visible(b)
+    } else if !up && c.cmp_h::<K>(b, list.head) == Ordering::Less {
+        list.up[b] = e;
+        list.link(NIL, b, list.head);
+        Walk::Visible(b)
+    } else {
+        Walk::Hidden(Exit::Ends)
+    }
+}
+
+/// Lemma 2 for an open chain, by one walk along it (the scan of `docs/algorithms/separation.md`,
+/// "The linear scan"): the envelope of the part walked so far is kept as a linked list, with the
+/// walk's current vertex either on it (a node) or hidden behind it together with the one gap (or
+/// the two ends of the range) through which the walk can come back into view. Heights are
+/// compared lexicographically with depths (`c.lex`): a symbolic shear, so distinct vertices have
+/// distinct heights. Returns the nodes bottom to top and the edge between each two.
+///
+/// # Complexity
+/// `O(n)`: each edge costs `O(1)` degree-2 tests plus one per node it removes, and a node is
+/// removed at most once.
+fn scan<K: Kernel>(c: &Ctx<'_>, m: usize) -> Result<(Vec<usize>, Vec<usize>), Bad> {
+    if m == 1 {
+        return Ok((vec![0], Vec::new()));
+    }
+    let mut list = List {
+        next: vec![NIL; m],
+        prev: vec![NIL; m],
+        up: vec![NIL; m],
+        head: NIL,
+        tail: NIL,
+    };
+    match c.cmp_h::<K>(0, 1) {
+        Ordering::Less => {
+            list.link(NIL, 0, NIL);
+            list.link(0, 1, NIL);
+            list.up[0] = 0;
+        }
+        Ordering::Greater => {
+            list.link(NIL, 1, NIL);
+            list.link(1, 0, NIL);
+            list.up[1] = 0;
+        }
+        Ordering::Equal => return Err(1),
+    }
+    let mut walk = Walk::Visible(1);
+    // Edge `e` runs from vertex `e` to vertex `e + 1`.
+    for e in 1..m - 1 {
+        let (a, b) = (e, e + 1);
+        let up = match c.cmp_h::<K>(b, a) {
+            Ordering::Greater => true,
+            Ordering::Less => false,
+            Ordering::Equal => return Err(b),
+        };
+        walk = match walk {
+            Walk::Visible(u) => {
+                // The edge beside `a` on the walk's side; only the walk's previous edge `e − 1`
+                // (the one other edge at `a`) can start at `a` there and hide `e`.
+                let side = if up { list.up[u] } else { list.down(u) };
+                let behind = side == e - 1 && edge_vs_edge::<K>(c, e, e - 1)? == Ordering::Greater;
+                if behind {
+                    // Between `e − 1` and the edge passing behind `a` on the other side (or
+                    // the end of the range there).
+                    let other = if up { list.down(u) } else { list.up[u] };
+                    if other == NIL {
+                        // `e` may still pass the far end of the range.
+                        past_the_ends::<K>(c, &mut list, e, b, up)
+                    } else {
+                        Walk::Hidden(Exit::Gap {
+                            w: u,
+                            up: !up,
+                            f: other,
+                        })
+                    }
+                } else {
+                    sweep::<K>(c, &mut list, u, e, b, up)?
+                }
+            }
+            Walk::Hidden(Exit::Ends) => past_the_ends::<K>(c, &mut list, e, b, up),
+            Walk::Hidden(Exit::Gap { w, up: side, f }) => {
+                // Out through the gap: across `w`'s height from its hidden side to its visible
+                // side, between `w` and `f`.
+                let (before, after) = if side {
+                    (Ordering::Less, Ordering::Greater)
+                } else {
+                    (Ordering::Greater, Ordering::Less)
+                };
+                let out = up == side
+                    && c.cmp_h::<K>(a, w) == before
+                    && c.cmp_h::<K>(b, w) == after
+                    && vertex_vs_edge::<K>(c, w, e)? == Ordering::Less
+                    && edge_vs_edge::<K>(c, e, f)? == Ordering::Less;
+                if out {
+                    sweep::<K>(c, &mut list, w, e, b, up)?
+                } else {
+                    walk
+                }
+            }
+        };
+    }
+    let mut nodes = Vec::new();
+    let mut edges = Vec::new();
+    let mut u = list.head;
+    // At most `m` nodes; the bound keeps the loop finite on any list.
+    while u != NIL && nodes.len() < m {
+        nodes.push(u);
+        if list.next[u] != NIL {
+            edges.push(list.up[u]);
+        }
+        u = list.next[u];
+    }
+    Ok((nodes, edges))
 }
 
 /// Lemma 2: the perpendicular-visibility envelope of a simple chain (open, or closed by repeating
 /// its first vertex at the end) lying on its side of the line: the visible vertices bottom to top
 /// and the edge carrying the envelope between each two, with symbolic shadow points.
 ///
-/// Divide and conquer over the chain (bottom-up, adjacent sub-chains merged pairwise): `O(n log n)`
-/// degree-2 tests in the worst case, `O(n)` when the sub-chains' height ranges meet only at their
-/// ends (monotone stretches).
+/// One walk along the open chain ([`scan`]) under the symbolic shear, whose breakpoints at one
+/// true height are then collapsed to the nearest; a closed chain's closing edge is merged in
+/// afterwards (one linear merge).
+///
+/// # Complexity
+/// `O(n)` degree-2 tests.
 ///
 /// # Errors
 /// [`SeparationError::NotSimple`] when the chain is seen not to be simple (a vertex on another
@@ -482,45 +794,53 @@ pub(crate) fn prepare<K: Kernel>(
     which: Chain,
 ) -> Result<Prepared, SeparationError> {
     let cl = clean(chain, which)?;
-    let lohi = orient_edges::<K>(frame, &cl);
+    let m = cl.v.len();
+    let sheared = orient_edges::<K>(frame, &cl, true);
+    let lohi = orient_edges::<K>(frame, &cl, false);
+    let s = Ctx {
+        frame,
+        v: &cl.v,
+        idx: &cl.idx,
+        lohi: &sheared,
+        lex: true,
+    };
     let c = Ctx {
         frame,
         v: &cl.v,
         idx: &cl.idx,
         lohi: &lohi,
+        lex: false,
     };
-    let mut level = Level::with_capacity(2 * cl.edges.len().max(1));
-    if cl.edges.is_empty() {
-        level.push(0, At::Vertex(0), None);
-        level.close(0);
-    } else {
-        for (e, &(u, w, _)) in cl.edges.iter().enumerate() {
-            leaf::<K>(&c, e, (u, w), &mut level);
-        }
-    }
-    // log2(n) rounds, each halving the number of envelopes.
-    let mut next = Level::with_capacity(level.bps.len());
-    while level.segs.len() > 1 {
-        next.clear();
-        let m = level.segs.len();
-        for s in (0..m).step_by(2) {
-            if s + 1 < m {
-                merge::<K>(&c, level.env(s), level.env(s + 1), &mut next)
-                    .map_err(|w| c.bad(w, which))?;
-            } else {
-                let start = next.bps.len();
-                next.bps.extend_from_slice(level.env(s).bps);
-                next.close(start);
+    let (nodes, edges) = scan::<K>(&s, m).map_err(|w| c.bad(w, which))?;
+    // Collapse the nodes at one true height to the first (the nearest): the edge below the
+    // group is the one below its first node, the edge above it the one above its last.
+    let mut level = Level::with_capacity(nodes.len() + 2);
+    for (k, &u) in nodes.iter().enumerate() {
+        let gap = edges.get(k).copied();
+        let same = k > 0 && c.frame.cmp_height::<K>(c.v[nodes[k - 1]], c.v[u]) == Ordering::Equal;
+        if same {
+            if let Some(last) = level.bps.last_mut() {
+                last.gap = gap;
             }
+        } else {
+            level.push(u, At::Vertex(u), gap);
         }
-        core::mem::swap(&mut level, &mut next);
     }
-    let env = if level.segs.is_empty() {
-        Env { bps: &[] }
-    } else {
-        level.env(0)
+    level.close(0);
+    let closing = cl
+        .edges
+        .len()
+        .checked_sub(1)
+        .filter(|_| cl.edges.len() == m);
+    let Some(z) = closing else {
+        return to_prepared::<K>(&c, &cl, level.env(0), which);
     };
-    to_prepared::<K>(&c, &cl, env, which)
+    // A closed chain: the closing edge (`m − 1` → 0) merged in.
+    let (u, w, _) = cl.edges[z];
+    leaf::<K>(&c, z, (u, w), &mut level);
+    let mut out = Level::with_capacity(level.bps.len());
+    merge::<K>(&c, level.env(0), level.env(1), &mut out).map_err(|w| c.bad(w, which))?;
+    to_prepared::<K>(&c, &cl, out.env(0), which)
 }
 
 /// The `O(n²)` twin of [`prepare`]: for every distinct vertex height, the nearest point of the
@@ -532,12 +852,13 @@ pub(crate) fn prepare_brute<K: Kernel>(
     which: Chain,
 ) -> Result<Prepared, SeparationError> {
     let cl = clean(chain, which)?;
-    let lohi = orient_edges::<K>(frame, &cl);
+    let lohi = orient_edges::<K>(frame, &cl, false);
     let c = Ctx {
         frame,
         v: &cl.v,
         idx: &cl.idx,
         lohi: &lohi,
+        lex: false,
     };
     let m = cl.v.len();
     // Distinct heights, each given by its first vertex, in increasing order (insertion sort by
@@ -712,8 +1033,7 @@ fn public<K: Kernel>(
 /// public for verification against [`perpendicular_envelope_brute`].
 ///
 /// # Complexity
-/// `O(n log n)` degree-2 predicates in the worst case (divide and conquer over the chain), `O(n)`
-/// for chains monotone along the line.
+/// `O(n)` degree-2 predicates: one walk along the chain (see the module documentation).
 ///
 /// # Errors
 /// [`SeparationError::EmptyChain`], [`SeparationError::InvalidCoordinate`],

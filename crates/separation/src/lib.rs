@@ -26,8 +26,8 @@
 //!
 //! | item | what it is | status |
 //! |---|---|---|
-//! | [`separation_of_chains`] | σ of two simple chains separated by a line, open or closed (a whole polygon boundary is passed with its first vertex repeated at the end), with a realizing pair and caller features: Lemma 2's envelope, then CVV + CVE (both ways) | done; `O(n log n)` worst case (the envelope), `O(n)` on monotone chains; agrees with the exact oracle, every test matrix checked for total monotonicity |
-//! | [`perpendicular_envelope`] | Lemma 2: the part of a simple chain perpendicularly visible from the line (visible vertices, edges, symbolic shadow points), by divide and conquer | done; `O(n log n)` worst case, `O(n)` on monotone chains |
+//! | [`separation_of_chains`] | σ of two simple chains separated by a line, open or closed (a whole polygon boundary is passed with its first vertex repeated at the end), with a realizing pair and caller features: Lemma 2's envelope, then CVV + CVE (both ways) | done; `O(n)` (the on-line pair's sort aside: `O(k log k)` for the `k` vertices on the line); agrees with the exact oracle, every test matrix checked for total monotonicity |
+//! | [`perpendicular_envelope`] | Lemma 2: the part of a simple chain perpendicularly visible from the line (visible vertices, edges, symbolic shadow points), by one walk along the chain | done; `O(n)` |
 //! | [`closest_visible_vertices`] | CVV of two chains separated by a line and monotone along it (edges perpendicular to the line allowed): Lemma 2, `W()` by hull scans, Lemma 3, `R()`, the tagged matrix `M` and SMAWK, `O(n_p + n_q)` | done (monotone chains only: the CVV of general chains is not that of their envelopes) |
 //! | [`CvvMatrix`], [`CveMatrix`], [`MatrixEntry`], [`EdgeEntry`], [`compare_entries`], [`compare_edge_entries`] | the matrices `M` themselves, for verification with `monotone_minima::check_totally_monotone_by` | done |
 //! | [`closest_visible_vertices_brute`], [`separation_brute`], [`perpendicular_envelope_brute`] | brute-force twins (test references, benchmark baselines) | done |

@@ -100,9 +100,9 @@ fn cve<K: Kernel>(m: &CveMatrix<K>, p_side: bool) -> Option<Cand> {
 /// polynomial of degree ≤ 10 in the input coordinates.
 ///
 /// # Complexity
-/// `O(n log n)` time and predicate calls in the worst case, for the envelope (divide and
-/// conquer); `O(n_p + n_q)` for chains monotone along the line, and every step after the envelope is
-/// `O(n_p + n_q)`.
+/// `O(n_p + n_q)` time and predicate calls: the envelope is one walk along each chain, and every
+/// step after it is linear too; only the pair of vertices both lying on the line comes from a sort
+/// of those vertices, `O(k log k)` for `k` of them (no predicate).
 ///
 /// # Errors
 /// [`SeparationError`]: empty chains, invalid coordinates or line, a line that does not separate

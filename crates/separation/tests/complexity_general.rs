@@ -67,11 +67,11 @@ fn cases(n: usize) -> Vec<Pair> {
     out
 }
 
-/// Envelope and σ predicate calls per vertex, measured (Robust): envelope at most 9.7, σ at most
-/// 18.1 (spirals), 8.5 (combs, line along the spine or a side: two visible vertices) and 60.8
-/// (combs facing tip to tip: a quarter of the vertices visible), flat from 130 to 131,074 vertices
-/// in all. The envelope is `O(n log n)` in the worst case; these families stay linear because the
-/// envelopes of sub-chains are small or meet in at most one height.
+/// Envelope and σ predicate calls per vertex, measured (Robust): envelope at most 11.2 (the linear
+/// scan; the divide and conquer before it measured at most 9.7 on these families, which kept it
+/// linear), σ at most 13.2 (spirals), 12.3 (combs, line along the spine or a side: two visible
+/// vertices) and 56.2 (combs facing tip to tip: a quarter of the vertices visible), flat from 130
+/// to 131,074 vertices in all.
 const ENVELOPE_PER_VERTEX: f64 = 16.0;
 const SIGMA_PER_VERTEX: f64 = 100.0;
 
@@ -100,4 +100,53 @@ fn closed_spirals_and_combs_are_linear() {
         }
     }
     assert_eq!(ran, 16);
+}
+
+/// A closed spiky star of `2k` vertices (tips at radius 1, valleys at radius 0.3) centred at
+/// `(0, 1.25)`, above the line `y = 0`; `turn` rotates it by a fraction of a spike.
+fn star(k: usize, turn: f64) -> Vec<DVec2> {
+    let mut v: Vec<DVec2> = (0..2 * k)
+        .map(|i| {
+            let t = (i as f64 + turn) * std::f64::consts::PI / k as f64;
+            let r = if i % 2 == 0 { 1.0 } else { 0.3 };
+            DVec2::new(r * t.cos(), 1.25 + r * t.sin())
+        })
+        .collect();
+    v.push(v[0]);
+    v
+}
+
+/// The envelope's predicate calls per vertex on spiky stars seen from a line below them (and
+/// beside them), measured (Robust): 10.2–10.3 (line below) and 8.5 (line beside) from 256 to
+/// 65,536 vertices, flat, for the scan of `docs/algorithms/separation.md` ("The linear scan").
+/// The divide and conquer it replaced grew with `log n` here (its sub-chains' envelopes overlap in
+/// height and keep every tip): 16.4 at 256 vertices, 20.4, 24.2 and 26.7 at 65,536, which fails
+/// this test. The test holds the scan to a bound and to flat growth.
+#[test]
+fn star_envelopes_are_linear() {
+    let mut per: Vec<f64> = Vec::new();
+    for k in [128usize, 1024, 8192, 32768] {
+        let mut worst: f64 = 0.0;
+        for (turn, (a, b)) in [
+            (0.0, (DVec2::new(0.0, 0.0), DVec2::new(1.0, 0.0))),
+            (0.37, (DVec2::new(0.0, 0.0), DVec2::new(1.0, 0.0))),
+            (0.0, (DVec2::new(-1.0, 0.0), DVec2::new(-1.0, 1.0))),
+        ] {
+            let p = star(k, turn);
+            reset_predicate_counts();
+            let e = perpendicular_envelope::<Counted<Robust>>(&p, a, b).unwrap();
+            let calls = predicate_counts().total() as f64 / p.len() as f64;
+            println!(
+                "star({k}) turn {turn} line {a} → {b}: {calls:.1} calls/vertex, {} visible",
+                e.vertices.len()
+            );
+            worst = worst.max(calls);
+        }
+        per.push(worst);
+    }
+    let (first, last) = (per[0], per[per.len() - 1]);
+    assert!(
+        per.iter().all(|&c| c <= 12.0) && last <= 1.2 * first,
+        "envelope calls per vertex {per:?}"
+    );
 }

@@ -669,6 +669,19 @@ proptest! {
         agree::<Robust>(&proptest_case(seed, size, open, far, Place::Beyond(extra)), true);
     }
 
+    /// The envelope's scan against its twin on lattice chains (see
+    /// `envelope_scan_matches_the_twin_on_lattice_chains`), longer ones included.
+    #[test]
+    fn proptest_envelope_scan_on_lattice_chains(seed in any::<u64>(), n in 3usize..24,
+                                                closed in any::<bool>()) {
+        if let Some((chain, a, b)) = lattice_envelope_case(seed, n, closed) {
+            prop_assert_eq!(
+                perpendicular_envelope::<Robust>(&chain, a, b).unwrap(),
+                perpendicular_envelope_brute::<Robust>(&chain, a, b).unwrap()
+            );
+        }
+    }
+
     /// The same with both chains touching the line.
     #[test]
     fn proptest_chains_touching_from_both_sides(seed in any::<u64>(), size in 3usize..16,
@@ -676,6 +689,67 @@ proptest! {
                                                 gap in 1i64..4) {
         agree::<Robust>(&proptest_case(seed, size, open, far, Place::Touching(gap)), true);
     }
+}
+
+/// A lattice chain for the envelope's scan: `n` points of a `6 × 6` grid (open, or closed when
+/// `closed`), so that many vertices share a height, edges run perpendicular to the line and
+/// collinear runs meet; `None` when the draw is not simple. The line has a direction of small
+/// integers and touches the chain (through its vertex of least depth), in either orientation.
+fn lattice_envelope_case(seed: u64, n: usize, closed: bool) -> Option<(Vec<DVec2>, DVec2, DVec2)> {
+    let mut rng = SplitMix64::new(seed);
+    let mut chain: Vec<DVec2> = (0..n)
+        .map(|_| DVec2::new(rng.range_i64(1, 6) as f64, rng.range_i64(0, 5) as f64))
+        .collect();
+    chain.dedup();
+    if chain.len() < 3 {
+        return None;
+    }
+    if closed {
+        chain.push(chain[0]);
+    }
+    if !simple_chain(&chain) {
+        return None;
+    }
+    let d = DVec2::new(rng.range_i64(-3, 3) as f64, rng.range_i64(-3, 3) as f64);
+    if d == DVec2::ZERO {
+        return None;
+    }
+    let a = *chain
+        .iter()
+        .min_by(|p, q| d.perp_dot(**p).total_cmp(&d.perp_dot(**q)))?;
+    Some(if rng.coin() {
+        (chain, a, a + d)
+    } else {
+        (chain, a + d, a)
+    })
+}
+
+/// The envelope's linear scan against its twin on lattice chains (shared heights, perpendicular
+/// edges, collinear runs, touching lines, both sides of the line), under Robust and Exact: the
+/// degenerate inputs of the scan's symbolic shear (`docs/algorithms/separation.md`, "The linear
+/// scan"). 40,000 draws, of which about a tenth are simple (3,764 in the first 20,000).
+#[test]
+fn envelope_scan_matches_the_twin_on_lattice_chains() {
+    let mut checked = 0;
+    for seed in 0..40_000u64 {
+        let n = 3 + (seed % 11) as usize;
+        let Some((chain, a, b)) = lattice_envelope_case(seed, n, seed % 3 == 0) else {
+            continue;
+        };
+        let twin = perpendicular_envelope_brute::<Robust>(&chain, a, b).unwrap();
+        assert_eq!(
+            perpendicular_envelope::<Robust>(&chain, a, b).unwrap(),
+            twin,
+            "seed {seed}: {chain:?}, line {a} → {b}"
+        );
+        assert_eq!(
+            perpendicular_envelope::<Exact>(&chain, a, b).unwrap(),
+            twin,
+            "seed {seed} (Exact)"
+        );
+        checked += 1;
+    }
+    assert!(checked > 6_000, "{checked}");
 }
 
 /// The case the proptest draws for its parameters.
