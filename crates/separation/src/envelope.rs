@@ -681,8 +681,8 @@ fn past_the_ends<K: Kernel>(c: &Ctx<'_>, list: &mut List, e: usize, b: usize, up
 /// `O(n)`: each edge costs `O(1)` degree-2 tests plus one per node it removes, and a node is
 /// removed at most once.
 fn scan<K: Kernel>(c: &Ctx<'_>, m: usize) -> Result<(Vec<usize>, Vec<usize>), Bad> {
-    if m == 1 {
-        return Ok((vec![0], Vec::new()));
+    if m <= 1 {
+        return Ok(((0..m).collect(), Vec::new()));
     }
     let mut list = List {
         next: vec![NIL; m],

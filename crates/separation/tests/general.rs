@@ -727,7 +727,8 @@ fn lattice_envelope_case(seed: u64, n: usize, closed: bool) -> Option<(Vec<DVec2
 /// The envelope's linear scan against its twin on lattice chains (shared heights, perpendicular
 /// edges, collinear runs, touching lines, both sides of the line), under Robust and Exact: the
 /// degenerate inputs of the scan's symbolic shear (`docs/algorithms/separation.md`, "The linear
-/// scan"). 40,000 draws, of which about a tenth are simple (3,764 in the first 20,000).
+/// scan"). 40,000 draws, of which about a tenth are simple (3,764 in the first 20,000); the Fast
+/// kernel runs on each too.
 #[test]
 fn envelope_scan_matches_the_twin_on_lattice_chains() {
     let mut checked = 0;
@@ -747,6 +748,8 @@ fn envelope_scan_matches_the_twin_on_lattice_chains() {
             twin,
             "seed {seed} (Exact)"
         );
+        // Fast (exact on these small integers, but run for its own code path): no panic.
+        let _ = perpendicular_envelope::<Fast>(&chain, a, b);
         checked += 1;
     }
     assert!(checked > 6_000, "{checked}");
