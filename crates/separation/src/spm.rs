@@ -49,26 +49,30 @@ pub struct Extensions {
     pub hit: Vec<Option<Hit>>,
 }
 
+/// No write before a task (the fan's funnels are written directly).
+const NO_PUT: (usize, u32) = (usize::MAX, 0);
+
 #[derive(Clone, Copy, Debug)]
 enum Task {
-    /// Cross into triangle `t` by its side `side` with the funnel `[lo, hi]`, apex at `ap`.
+    /// Write vertex `put.1` at position `put.0` (remembering what was there), then cross into
+    /// triangle `t` by its side `side` with the funnel `[lo, hi]`, apex at `ap`.
     Visit {
-        t: usize,
-        side: usize,
+        t: u32,
+        side: u8,
         lo: usize,
         hi: usize,
         ap: usize,
+        put: (usize, u32),
     },
-    /// The funnel `[lo, hi]` (apex `ap`) reached ring edge `k`.
+    /// Write as for `Visit`, then: the funnel `[lo, hi]` (apex `ap`) reached ring edge `k`.
     Leaf {
-        k: usize,
+        k: u32,
         lo: usize,
         hi: usize,
         ap: usize,
+        put: (usize, u32),
     },
-    /// Write vertex `v` at `pos`, remembering what was there.
-    Put { pos: usize, v: u32 },
-    /// Restore the last `Put`.
+    /// Restore the last write.
     Undo,
 }
 
@@ -99,7 +103,8 @@ pub fn extensions<K: Kernel>(tri: &Triangulation, ring: &[DVec2], s: usize) -> E
     let mid = n + 4;
     let mut buf = vec![0u32; 2 * n + 8];
     let mut undo: Vec<(usize, u32)> = Vec::with_capacity(n);
-    let mut stack: Vec<Task> = Vec::new();
+    // The pending work: about two tasks per level of the depth-first walk.
+    let mut stack: Vec<Task> = Vec::with_capacity(2 * triangles.len().min(1 << 20) + 8);
     // Each triangle is entered once (the dual graph is a tree); the flag keeps every loop finite and
     // every index in range even on a triangulation built from inconsistent (Fast) signs.
     let mut entered = vec![false; triangles.len()];
@@ -153,27 +158,33 @@ pub fn extensions<K: Kernel>(tri: &Triangulation, ring: &[DVec2], s: usize) -> E
                 let j = j as usize;
                 if let Some(side) = side_of(j, x, y) {
                     stack.push(Task::Visit {
-                        t: j,
-                        side,
+                        t: j as u32,
+                        side: side as u8,
                         lo,
                         hi,
                         ap,
+                        put: NO_PUT,
                     });
                 }
             }
         }
         while let Some(task) = stack.pop() {
+            let put = match task {
+                Task::Visit { put, .. } | Task::Leaf { put, .. } => put,
+                Task::Undo => NO_PUT,
+            };
+            if put.0 != NO_PUT.0 {
+                undo.push((put.0, buf[put.0]));
+                buf[put.0] = put.1;
+            }
             match task {
-                Task::Put { pos, v } => {
-                    undo.push((pos, buf[pos]));
-                    buf[pos] = v;
-                }
                 Task::Undo => {
                     if let Some((pos, v)) = undo.pop() {
                         buf[pos] = v;
                     }
                 }
-                Task::Leaf { k, lo, hi, ap } => {
+                Task::Leaf { k, lo, hi, ap, .. } => {
+                    let k = k as usize;
                     let (x, y) = (buf[lo], buf[hi]);
                     for p in lo + 1..hi {
                         if p == ap {
@@ -199,7 +210,9 @@ pub fn extensions<K: Kernel>(tri: &Triangulation, ring: &[DVec2], s: usize) -> E
                     lo,
                     hi,
                     ap,
+                    ..
                 } => {
+                    let (t, side) = (t as usize, usize::from(side));
                     if std::mem::replace(&mut entered[t], true) {
                         continue;
                     }
@@ -257,28 +270,30 @@ pub fn extensions<K: Kernel>(tri: &Triangulation, ring: &[DVec2], s: usize) -> E
                         ),
                     ];
                     for (s_idx, (cx, cy), pos, (clo, chi, cap)) in children {
+                        let put = (pos, w);
                         let work = match neighbors[t][s_idx] {
                             Neighbor::RingEdge(k) => Some(Task::Leaf {
-                                k: k as usize,
+                                k,
                                 lo: clo,
                                 hi: chi,
                                 ap: cap,
+                                put,
                             }),
                             Neighbor::Triangle(j) => {
-                                let j = j as usize;
-                                side_of(j, cx, cy).map(|side| Task::Visit {
+                                side_of(j as usize, cx, cy).map(|side| Task::Visit {
                                     t: j,
-                                    side,
+                                    side: side as u8,
                                     lo: clo,
                                     hi: chi,
                                     ap: cap,
+                                    put,
                                 })
                             }
                         };
                         if let Some(work) = work {
+                            // The write happens when `work` is popped; `Undo` after its subtree.
                             stack.push(Task::Undo);
                             stack.push(work);
-                            stack.push(Task::Put { pos, v: w });
                         }
                     }
                 }
