@@ -513,25 +513,8 @@ struct List {
 }
 
 impl List {
-    /// Links `b` (not in the list) between `lo` and `hi`, either of them [`NIL`] at an end.
-    fn link(&mut self, lo: usize, b: usize, hi: usize) {
-        self.prev[b] = lo;
-        self.next[b] = hi;
-        if lo == NIL {
-            self.head = b;
-        } else {
-            self.next[lo] = b;
-        }
-        if hi == NIL {
-            self.tail = b;
-        } else {
-            self.prev[hi] = b;
-        }
-    }
-
-    /// Unlinks `u`, keeping the edges of the others.
-    fn unlink(&mut self, u: usize) {
-        let (lo, hi) = (self.prev[u], self.next[u]);
+    /// Makes `lo` and `hi` neighbours (either [`NIL`]: `hi` becomes the head, `lo` the tail).
+    fn join(&mut self, lo: usize, hi: usize) {
         if lo == NIL {
             self.head = hi;
         } else {
@@ -541,6 +524,33 @@ impl List {
             self.tail = lo;
         } else {
             self.prev[hi] = lo;
+        }
+    }
+
+    /// Links `b` (not in the list) between the neighbours `lo` and `hi`.
+    fn link(&mut self, lo: usize, b: usize, hi: usize) {
+        self.join(lo, b);
+        self.join(b, hi);
+    }
+
+    /// Unlinks `u`, keeping the edges of the others.
+    fn unlink(&mut self, u: usize) {
+        self.join(self.prev[u], self.next[u]);
+    }
+
+    /// Links the walk's vertex `b` next to node `cur`, above it when `up`, with the walk's edge
+    /// `e` between them; the edge that was there (or none, at an end) now runs between `b` and
+    /// the old neighbour.
+    fn attach(&mut self, cur: usize, b: usize, e: usize, up: bool) {
+        if up {
+            let hi = self.next[cur];
+            self.up[b] = self.up[cur];
+            self.up[cur] = e;
+            self.link(cur, b, hi);
+        } else {
+            let lo = self.prev[cur];
+            self.up[b] = e;
+            self.link(lo, b, cur);
         }
     }
 
@@ -589,14 +599,7 @@ fn sweep<K: Kernel>(
         let nxt = if up { list.next[cur] } else { list.prev[cur] };
         if nxt == NIL {
             // Beyond the envelope's range: `e` alone there.
-            if up {
-                list.up[cur] = e;
-                list.up[b] = NIL;
-                list.link(cur, b, NIL);
-            } else {
-                list.up[b] = e;
-                list.link(NIL, b, cur);
-            }
+            list.attach(cur, b, e, up);
             return Ok(Walk::Visible(b));
         }
         let beyond = if up {
@@ -604,8 +607,9 @@ fn sweep<K: Kernel>(
         } else {
             Ordering::Less
         };
-        if c.cmp_h::<K>(b, nxt) != beyond {
-            if c.cmp_h::<K>(b, nxt) == Ordering::Equal {
+        let o = c.cmp_h::<K>(b, nxt);
+        if o != beyond {
+            if o == Ordering::Equal {
                 return Err(b); // two vertices at one point
             }
             // `e` ends before `nxt`, in front of the edge there, which passes behind `b`: one
@@ -614,14 +618,7 @@ fn sweep<K: Kernel>(
             if vertex_vs_edge::<K>(c, b, f)? != Ordering::Less {
                 return Err(b);
             }
-            if up {
-                list.up[cur] = e;
-                list.up[b] = f;
-                list.link(cur, b, nxt);
-            } else {
-                list.up[b] = e;
-                list.link(nxt, b, cur);
-            }
+            list.attach(cur, b, e, up);
             return Ok(Walk::Visible(b));
         }
         match vertex_vs_edge::<K>(c, nxt, e)? {
@@ -655,15 +652,13 @@ fn sweep<K: Kernel>(
 /// The walk's edge `e` toward `b`, behind the envelope and inside its height range at its start:
 /// in view again beyond `b` if `b` is past the end of the range it moves toward.
 fn past_the_ends<K: Kernel>(c: &Ctx<'_>, list: &mut List, e: usize, b: usize, up: bool) -> Walk {
-    if up && c.cmp_h::<K>(b, list.tail) == Ordering::Greater {
-        let t = list.tail;
-        list.up[t] = e;
-        list.up[b] = NIL;
-        list.link(t, b, NIL);
-        Walk::Visible(b)
-    } else if !up && c.cmp_h::<K>(b, list.head) == Ordering::Less {
-        list.up[b] = e;
-        list.link(NIL, b, list.head);
+    let (end, beyond) = if up {
+        (list.tail, Ordering::Greater)
+    } else {
+        (list.head, Ordering::Less)
+    };
+    if c.cmp_h::<K>(b, end) == beyond {
+        list.attach(end, b, e, up);
         Walk::Visible(b)
     } else {
         Walk::Hidden(Exit::Ends)
