@@ -25,6 +25,12 @@
 //! Series: `sigma_fast`, `sigma_robust`, `envelope_robust` (`perpendicular_envelope::<Robust>` of
 //! one polygon), `brute_robust`, `parry_build_query` (the boundaries as closed `Polyline`s).
 //!
+//! Lemma 2's envelope alone on a closed spiky star (`N` vertices, tips at radius 1, valleys at 0.3,
+//! seen from a line below it; a quarter of the vertices visible), `N` in 512 … 1,048,576:
+//! `separation/envelope_stars`, series `envelope_fast`, `envelope_robust` (the linear walk of
+//! `docs/algorithms/separation.md`) and `envelope_brute_robust` (its `O(n²)` twin, up to 4,096),
+//! which must agree before timing. The time per vertex should stay flat.
+//!
 //! Before timing, parry's and the brute force's distances are checked against polydist's (relative
 //! 1e-9). Run: `cargo bench -p polydist-benches --bench separation`. Figures only.
 
@@ -39,7 +45,8 @@ use parry2d_f64::shape::Polyline;
 use polydist_oracle::{SplitMix64, comb, spiral};
 use polydist_predicates::{Exact, Fast, Kernel, Robust};
 use polydist_separation::{
-    closest_visible_vertices, perpendicular_envelope, separation_brute, separation_of_chains,
+    closest_visible_vertices, perpendicular_envelope, perpendicular_envelope_brute,
+    separation_brute, separation_of_chains,
 };
 
 /// Total vertices.
@@ -265,8 +272,72 @@ fn run_closed(c: &mut Criterion, name: &str, make: fn(usize) -> Closed) {
     group.finish();
 }
 
+/// A closed spiky star of `n` vertices (`n / 2` tips at radius 1, valleys at 0.3) centred at
+/// `(0, 1.25)`, above the line `y = 0`; the last vertex repeats the first.
+fn star_chain(n: usize) -> Vec<DVec2> {
+    let k = (n / 2).max(3);
+    let mut v: Vec<DVec2> = (0..2 * k)
+        .map(|i| {
+            let t = i as f64 * std::f64::consts::PI / k as f64;
+            let r = if i % 2 == 0 { 1.0 } else { 0.3 };
+            DVec2::new(r * t.cos(), 1.25 + r * t.sin())
+        })
+        .collect();
+    v.push(v[0]);
+    v
+}
+
+fn run_envelope_stars(c: &mut Criterion) {
+    let mut group = c.benchmark_group("separation/envelope_stars");
+    configure(&mut group);
+    let (a, b) = (DVec2::new(0.0, 0.0), DVec2::new(1.0, 0.0));
+    for n in [512usize, 4096, 32_768, 131_072, 1_048_576] {
+        let star = star_chain(n);
+        let env = perpendicular_envelope::<Robust>(&star, a, b).expect("valid");
+        if n <= BRUTE_MAX {
+            let twin = perpendicular_envelope_brute::<Robust>(&star, a, b).expect("valid");
+            assert_eq!(env, twin, "envelope_stars n={n}: the twin disagrees");
+        }
+        for (name, run) in [
+            (
+                "envelope_fast",
+                perpendicular_envelope::<Fast> as EnvelopeFn,
+            ),
+            ("envelope_robust", perpendicular_envelope::<Robust>),
+        ] {
+            group.bench_with_input(BenchmarkId::new(name, n), &star, |bench, s| {
+                bench.iter(|| run(black_box(s), a, b).expect("valid").vertices.len())
+            });
+        }
+        if n <= BRUTE_MAX {
+            group.bench_with_input(
+                BenchmarkId::new("envelope_brute_robust", n),
+                &star,
+                |bench, s| {
+                    bench.iter(|| {
+                        perpendicular_envelope_brute::<Robust>(black_box(s), a, b)
+                            .expect("valid")
+                            .vertices
+                            .len()
+                    })
+                },
+            );
+        }
+    }
+    group.finish();
+}
+
+/// One envelope routine, for a table of them.
+type EnvelopeFn = fn(
+    &[DVec2],
+    DVec2,
+    DVec2,
+)
+    -> Result<polydist_separation::Envelope, polydist_separation::SeparationError>;
+
 fn benches() {
     let mut c = Criterion::default().configure_from_args();
+    run_envelope_stars(&mut c);
     run_closed(&mut c, "separation/closed_spirals", closed_spirals);
     run_closed(&mut c, "separation/closed_combs", closed_combs);
     run(&mut c, "separation/random", random);
