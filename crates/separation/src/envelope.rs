@@ -142,7 +142,17 @@ struct Ctx<'a> {
 /// vertex involved.
 type Bad = usize;
 
-impl Ctx<'_> {
+impl<'a> Ctx<'a> {
+    fn new(frame: Frame, cl: &'a Clean, lohi: &'a [Option<(usize, usize)>], lex: bool) -> Self {
+        Ctx {
+            frame,
+            v: &cl.v,
+            idx: &cl.idx,
+            lohi,
+            lex,
+        }
+    }
+
     fn bad(&self, k: usize, which: Chain) -> SeparationError {
         SeparationError::NotSimple {
             chain: which,
@@ -486,17 +496,26 @@ fn to_prepared<K: Kernel>(
     Ok(out)
 }
 
-fn orient_edges<K: Kernel>(frame: Frame, cl: &Clean, lex: bool) -> Vec<Option<(usize, usize)>> {
+/// Each edge's lower and upper vertex: by true height (`None` for an edge perpendicular to the
+/// line), and under the scan's shear (a perpendicular edge then points away from the line). One
+/// height test per edge, a depth test only on the perpendicular ones.
+type Lohi = Vec<Option<(usize, usize)>>;
+
+fn orient_edges<K: Kernel>(frame: Frame, cl: &Clean) -> (Lohi, Lohi) {
     cl.edges
         .iter()
-        .map(
-            |&(u, w, _)| match cmp_heights::<K>(frame, cl.v[u], cl.v[w], lex) {
+        .map(|&(u, w, _)| {
+            let up = |o: Ordering| match o {
                 Ordering::Less => Some((u, w)),
                 Ordering::Greater => Some((w, u)),
                 Ordering::Equal => None,
-            },
-        )
-        .collect()
+            };
+            match frame.cmp_height::<K>(cl.v[u], cl.v[w]) {
+                Ordering::Equal => (None, up(frame.cmp_depth::<K>(cl.v[u], cl.v[w]))),
+                o => (up(o), up(o)),
+            }
+        })
+        .unzip()
 }
 
 /// No node: the end of the scan's list.
@@ -686,19 +705,14 @@ fn scan<K: Kernel>(c: &Ctx<'_>, m: usize) -> Result<(Vec<usize>, Vec<usize>), Ba
         head: NIL,
         tail: NIL,
     };
-    match c.cmp_h::<K>(0, 1) {
-        Ordering::Less => {
-            list.link(NIL, 0, NIL);
-            list.link(0, 1, NIL);
-            list.up[0] = 0;
-        }
-        Ordering::Greater => {
-            list.link(NIL, 1, NIL);
-            list.link(1, 0, NIL);
-            list.up[1] = 0;
-        }
+    // The first edge alone: its two ends, the lower first.
+    let (lo, hi) = match c.cmp_h::<K>(0, 1) {
+        Ordering::Less => (0, 1),
+        Ordering::Greater => (1, 0),
         Ordering::Equal => return Err(1),
-    }
+    };
+    list.link(NIL, lo, NIL);
+    list.attach(lo, hi, 0, true);
     let mut walk = Walk::Visible(1);
     // Edge `e` runs from vertex `e` to vertex `e + 1`.
     for e in 1..m - 1 {
@@ -790,22 +804,9 @@ pub(crate) fn prepare<K: Kernel>(
 ) -> Result<Prepared, SeparationError> {
     let cl = clean(chain, which)?;
     let m = cl.v.len();
-    let sheared = orient_edges::<K>(frame, &cl, true);
-    let lohi = orient_edges::<K>(frame, &cl, false);
-    let s = Ctx {
-        frame,
-        v: &cl.v,
-        idx: &cl.idx,
-        lohi: &sheared,
-        lex: true,
-    };
-    let c = Ctx {
-        frame,
-        v: &cl.v,
-        idx: &cl.idx,
-        lohi: &lohi,
-        lex: false,
-    };
+    let (lohi, sheared) = orient_edges::<K>(frame, &cl);
+    let s = Ctx::new(frame, &cl, &sheared, true);
+    let c = Ctx::new(frame, &cl, &lohi, false);
     let (nodes, edges) = scan::<K>(&s, m).map_err(|w| c.bad(w, which))?;
     // Collapse the nodes at one true height to the first (the nearest): the edge below the
     // group is the one below its first node, the edge above it the one above its last.
@@ -847,14 +848,8 @@ pub(crate) fn prepare_brute<K: Kernel>(
     which: Chain,
 ) -> Result<Prepared, SeparationError> {
     let cl = clean(chain, which)?;
-    let lohi = orient_edges::<K>(frame, &cl, false);
-    let c = Ctx {
-        frame,
-        v: &cl.v,
-        idx: &cl.idx,
-        lohi: &lohi,
-        lex: false,
-    };
+    let (lohi, _) = orient_edges::<K>(frame, &cl);
+    let c = Ctx::new(frame, &cl, &lohi, false);
     let m = cl.v.len();
     // Distinct heights, each given by its first vertex, in increasing order (insertion sort by
     // exact comparisons: O(n²)).

@@ -67,10 +67,10 @@ fn cases(n: usize) -> Vec<Pair> {
     out
 }
 
-/// Envelope and σ predicate calls per vertex, measured (Robust): envelope at most 10.0 (the linear
+/// Envelope and σ predicate calls per vertex, measured (Robust): envelope at most 9.0 (the linear
 /// scan; the divide and conquer before it measured at most 9.7 on these families, which kept it
-/// linear), σ at most 13.0 (spirals), 11.1 (combs, line along the spine or a side: two visible
-/// vertices) and 55.5 (combs facing tip to tip: a quarter of the vertices visible), flat from 130
+/// linear), σ at most 12.0 (spirals), 10.1 (combs, line along the spine or a side: two visible
+/// vertices) and 54.5 (combs facing tip to tip: a quarter of the vertices visible), flat from 130
 /// to 131,074 vertices in all.
 const ENVELOPE_PER_VERTEX: f64 = 16.0;
 const SIGMA_PER_VERTEX: f64 = 100.0;
@@ -117,7 +117,7 @@ fn star(k: usize, turn: f64) -> Vec<DVec2> {
 }
 
 /// The envelope's predicate calls per vertex on spiky stars seen from a line below them (and
-/// beside them), measured (Robust): 9.7–9.8 (line below) and 8.1 (line beside) from 256 to
+/// beside them), measured (Robust): 8.7–8.8 (line below) and 7.1 (line beside) from 256 to
 /// 65,536 vertices, flat, for the scan of `docs/algorithms/separation.md` ("The linear scan").
 /// The divide and conquer it replaced grew with `log n` here (its sub-chains' envelopes overlap in
 /// height and keep every tip): 16.4 at 256 vertices, 20.4, 24.2 and 26.7 at 65,536, which fails
