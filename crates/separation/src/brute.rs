@@ -441,7 +441,7 @@ fn bounds(c: Cand, p: &[DVec2], q: &[DVec2]) -> (f64, f64) {
 /// project strictly inside the edge are skipped (same answer, fewer comparisons: Amato's separator
 /// scans its subproblems this way). `O(n_p · n_q)`.
 pub(crate) fn scan<K: Kernel>(p: &[DVec2], q: &[DVec2], interior_only: bool) -> ClosestPair {
-    scan_best::<K>(p, q, interior_only, f64::INFINITY)
+    scan_best::<K>(p, q, interior_only, f64::INFINITY, Seen::NONE)
         .0
         .pair(p, q)
 }
@@ -451,47 +451,100 @@ pub(crate) fn scan<K: Kernel>(p: &[DVec2], q: &[DVec2], interior_only: bool) -> 
 /// winner, nothing constructed yet, and an upper bound of its squared distance (`∞` when unknown).
 /// If some pair is strictly nearer than the known distance the winner is the scan's nearest pair;
 /// otherwise it is some pair of the chains (a true distance, never below the nearest).
+#[cfg(test)]
 pub(crate) fn scan_winner_below<K: Kernel>(p: &[DVec2], q: &[DVec2], cut: f64) -> (Winner, f64) {
-    let (c, hi) = scan_best::<K>(p, q, true, cut);
+    scan_winner_below_except::<K>(p, q, cut, Seen::NONE)
+}
+
+/// [`scan_winner_below`] without the candidates of `seen`, pairs an earlier scan already took
+/// (see [`Seen`]): the winner is then the nearest pair of the others when that is strictly nearer
+/// than `√cut`, and some pair of the chains otherwise. Every candidate left out has both features
+/// in `seen`'s ranges, so a caller that folds the two scans' winners finds the same minimum.
+pub(crate) fn scan_winner_below_except<K: Kernel>(
+    p: &[DVec2],
+    q: &[DVec2],
+    cut: f64,
+    seen: Seen,
+) -> (Winner, f64) {
+    let (c, hi) = scan_best::<K>(p, q, true, cut, seen);
     (c.winner(p, q), hi)
 }
 
+/// Vertices of the two chains whose candidates an earlier scan took: every vertex–vertex pair
+/// with its `P` vertex in `p` and its `Q` vertex in `q` (local indices, half-open), and every
+/// vertex–edge pair whose vertex and both edge ends are in them. Consecutive subproblems of the
+/// separator share an edge at each end (a cut falls inside it and both subchains keep it whole), and
+/// on small subproblems these pairs are a quarter of the scan.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub(crate) struct Seen {
+    pub(crate) p: Range<usize>,
+    pub(crate) q: Range<usize>,
+}
+
+impl Seen {
+    /// No candidate seen.
+    pub(crate) const NONE: Seen = Seen { p: 0..0, q: 0..0 };
+}
+
 /// [`scan`]'s loop; candidates bounded strictly above `cut` (squared) are skipped (`interior_only`
-/// only: the bounds are those of the line distances). The winner and its squared distance's upper
-/// bound.
-fn scan_best<K: Kernel>(p: &[DVec2], q: &[DVec2], interior_only: bool, cut: f64) -> (Cand, f64) {
+/// only: the bounds are those of the line distances), and so are those of `seen`. The winner and
+/// its squared distance's upper bound. With every candidate skipped the winner is `Vv(0, 0)`, a
+/// pair of the chains (its vertex–vertex pair is never skipped by the bounds: it is the initial
+/// best).
+fn scan_best<K: Kernel>(
+    p: &[DVec2],
+    q: &[DVec2],
+    interior_only: bool,
+    cut: f64,
+    seen: Seen,
+) -> (Cand, f64) {
     // A candidate bounded strictly above the best cannot win, one bounded strictly below it wins:
     // only overlapping bounds (near ties) need the exact comparison.
-    fn all<K: Kernel, const I: bool>(p: &[DVec2], q: &[DVec2], cut: f64) -> (Cand, f64) {
+    fn all<K: Kernel, const I: bool>(
+        p: &[DVec2],
+        q: &[DVec2],
+        cut: f64,
+        seen: Seen,
+    ) -> (Cand, f64) {
         let mut best = Best::<K, I>::new(p, q, cut);
         let mut consider = |c: Cand| best.consider(c);
+        let (sp, sq) = (&seen.p, &seen.q);
+        // Edge `k` is seen when both its ends are.
+        let edge_seen = |r: &Range<usize>, k: usize| r.start <= k && k + 1 < r.end;
         for i in 0..p.len() {
+            let ip = sp.contains(&i);
             for j in 0..q.len() {
                 // `Vv(0, 0)` is the initial best: against itself it is `Equal` under every kernel.
-                if i > 0 || j > 0 {
+                if (i > 0 || j > 0) && !(ip && sq.contains(&j)) {
                     consider(Cand::Vv(i, j));
                 }
             }
         }
         for i in 0..p.len() {
+            let ip = sp.contains(&i);
             for j in 0..q.len().saturating_sub(1) {
-                consider(Cand::PvQe(i, j));
+                if !(ip && edge_seen(sq, j)) {
+                    consider(Cand::PvQe(i, j));
+                }
             }
         }
         for j in 0..q.len() {
+            let jq = sq.contains(&j);
             for i in 0..p.len().saturating_sub(1) {
-                consider(Cand::QvPe(j, i));
+                if !(jq && edge_seen(sp, i)) {
+                    consider(Cand::QvPe(j, i));
+                }
             }
         }
         // A vertex–edge candidate whose nearest point is an endpoint is never strictly better than
-        // that vertex–vertex pair, which was considered first: so the winner's foot is strictly
-        // inside.
+        // that vertex–vertex pair, which was considered first (here or, for a seen edge, by the
+        // scan that saw it): so the winner's foot is strictly inside.
         (best.best, best.b.1)
     }
     if interior_only {
-        all::<K, true>(p, q, cut)
+        all::<K, true>(p, q, cut, seen)
     } else {
-        all::<K, false>(p, q, cut)
+        all::<K, false>(p, q, cut, seen)
     }
 }
 
@@ -1280,6 +1333,74 @@ mod tests {
             }
         }
         assert!(beaten > 1000 && not > 1000, "{beaten} {not}");
+    }
+
+    /// A scan without the pairs of `seen`, folded with a scan of the seen vertices alone (which
+    /// holds every seen candidate), finds the scan's distance exactly; and with nothing seen it is
+    /// the scan, feature for feature.
+    #[test]
+    fn scans_without_seen_pairs_fold_to_the_scan() {
+        let mut rng = SplitMix64::new(0x5ee);
+        let mut skipped_the_winner = 0;
+        for round in 0..3000 {
+            let class = [0, 1, 4][round % 3];
+            let p: Vec<DVec2> = (0..1 + rng.index(10))
+                .map(|_| point(&mut rng, class))
+                .collect();
+            let q: Vec<DVec2> = (0..1 + rng.index(10))
+                .map(|_| point(&mut rng, class) + DVec2::new(0.75, 0.0))
+                .collect();
+            let range = |rng: &mut SplitMix64, n: usize| {
+                let a = rng.index(n + 1);
+                let b = a + rng.index(n + 1 - a);
+                a..b
+            };
+            let seen = Seen {
+                p: range(&mut rng, p.len()),
+                q: range(&mut rng, q.len()),
+            };
+            let whole = scan::<Robust>(&p, &q, true);
+            let exact = |c: Cand| c.dist(&p, &q);
+            let (w, _) = scan_winner_below_except::<Robust>(&p, &q, f64::INFINITY, seen.clone());
+            let mut d = exact(w.cand);
+            if !seen.p.is_empty() && !seen.q.is_empty() {
+                let (sp, sq) = (&p[seen.p.clone()], &q[seen.q.clone()]);
+                let inner = scan::<Robust>(sp, sq, true);
+                let di = match (inner.feature_p, inner.feature_q) {
+                    (Feature::Vertex(i), Feature::Vertex(j)) => Dist2::PointPoint(sp[i], sq[j]),
+                    (Feature::Vertex(i), Feature::Edge(j)) => {
+                        Dist2::PointSegment(sp[i], sq[j], sq[j + 1])
+                    }
+                    (Feature::Edge(i), Feature::Vertex(j)) => {
+                        Dist2::PointSegment(sq[j], sp[i], sp[i + 1])
+                    }
+                    _ => unreachable!("a scan reports a vertex"),
+                };
+                if Robust::cmp_dist2(di, d) == Ordering::Less {
+                    skipped_the_winner += 1;
+                    d = di;
+                }
+            }
+            let dw = match (whole.feature_p, whole.feature_q) {
+                (Feature::Vertex(i), Feature::Vertex(j)) => Dist2::PointPoint(p[i], q[j]),
+                (Feature::Vertex(i), Feature::Edge(j)) => Dist2::PointSegment(p[i], q[j], q[j + 1]),
+                (Feature::Edge(i), Feature::Vertex(j)) => Dist2::PointSegment(q[j], p[i], p[i + 1]),
+                _ => unreachable!("a scan reports a vertex"),
+            };
+            assert_eq!(
+                Robust::cmp_dist2(d, dw),
+                Ordering::Equal,
+                "{p:?} {q:?} {seen:?}"
+            );
+            let (none, _) = scan_winner_below_except::<Robust>(&p, &q, f64::INFINITY, Seen::NONE);
+            assert_eq!(
+                none.features(),
+                (whole.feature_p, whole.feature_q),
+                "{p:?} {q:?}"
+            );
+        }
+        // The seen ranges held the nearest pair often enough for the fold to matter.
+        assert!(skipped_the_winner > 100, "{skipped_the_winner}");
     }
 
     #[test]

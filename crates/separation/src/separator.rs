@@ -30,8 +30,8 @@ use polydist_polygon::{Feature, SimplePolygon, convex_hull_of_two_with};
 #[cfg(test)]
 use crate::brute::separation_brute;
 use crate::brute::{
-    Winner, cmp_scan, farther_from_line_than, scan_pruned_winner_below, scan_winner_below,
-    upper_bound,
+    Seen, Winner, cmp_scan, farther_from_line_than, scan_pruned_winner_below,
+    scan_winner_below_except, upper_bound,
 };
 use crate::error::SeparationError;
 use crate::geodesic::{Hit, first_hit_within, merge_collinear, shortest_path};
@@ -1279,6 +1279,9 @@ fn solve_pass<K: Kernel>(
     stats.separator_segments += b.kept.len();
     stats.cut_fallbacks += b.cut_fallbacks;
     let (mut pcv, mut qcv) = (Vec::new(), Vec::new());
+    // The positions `(plo, phi, qlo, qhi)` of the last subproblem scanned whole, if the one before
+    // this was: their common pairs are not scanned twice.
+    let mut last_scanned: Option<(usize, usize, usize, usize)> = None;
     for (i, &((plo, phi), (qlo_all, qhi_all))) in b.sub.iter().enumerate() {
         let parts = match r.gap {
             Some(g) if qlo_all <= g && g < qhi_all => [(qlo_all, g), (g + 1, qhi_all)],
@@ -1362,6 +1365,7 @@ fn solve_pass<K: Kernel>(
                     )
                 })
             };
+            let found_none = found.is_none();
             match found {
                 Some(found) => {
                     stats.subproblems_section3 += 1;
@@ -1371,11 +1375,16 @@ fn solve_pass<K: Kernel>(
                 }
                 None => {
                     stats.subproblems_scanned += 1;
-                    let w = scan_part::<K>(&pcv, &qcv, cut);
+                    let seen = last_scanned.map_or(Seen::NONE, |(p0, p1, q0, q1)| Seen {
+                        p: overlap(plo, phi, p0, p1),
+                        q: overlap(qlo, qhi, q0, q1),
+                    });
+                    let w = scan_part::<K>(&pcv, &qcv, cut, seen);
                     let (fp, fq) = w.features();
                     fold(fp, fq, Err(w));
                 }
             }
+            last_scanned = found_none.then_some((plo, phi, qlo, qhi));
         }
     }
 }
@@ -1443,12 +1452,22 @@ fn trimmed(r: &Region, qlo: usize, qhi: usize) -> Option<(usize, usize)> {
 /// subchains), with the same answer; candidates whose squared distance is bounded strictly above
 /// `cut` (the best answer so far's) are skipped, so the winner is the parts' nearest pair when that
 /// beats the best so far, and some pair of the parts otherwise.
-fn scan_part<K: Kernel>(p: &[DVec2], q: &[DVec2], cut: f64) -> Winner {
+///
+/// The plain scan also leaves out the pairs of `seen` (which an earlier scan took); the pruned one
+/// takes every pair.
+fn scan_part<K: Kernel>(p: &[DVec2], q: &[DVec2], cut: f64, seen: Seen) -> Winner {
     if p.len() * q.len() > PRUNE_ABOVE {
         scan_pruned_winner_below::<K>(p, q, cut).0
     } else {
-        scan_winner_below::<K>(p, q, cut).0
+        scan_winner_below_except::<K>(p, q, cut, seen).0
     }
+}
+
+/// The positions `lo..=hi` that also lie in `lo0..=hi0`, as a half-open range of local indices
+/// (counted from `lo`); empty when the two are disjoint.
+fn overlap(lo: usize, hi: usize, lo0: usize, hi0: usize) -> core::ops::Range<usize> {
+    let (a, b) = (lo.max(lo0), hi.min(hi0));
+    if a > b { 0..0 } else { a - lo..b + 1 - lo }
 }
 
 /// A candidate of one subproblem, in features of its subchains: a pair section 3 built or a
@@ -1486,7 +1505,7 @@ fn execute<K: Kernel>(
         out.push((fp, fq, Ok(sep.pair)));
     }
     for &((p0, p1), (q0, q1)) in &jobs.scans {
-        let w = scan_part::<K>(&p[p0..=p1], &q[q0..=q1], cut);
+        let w = scan_part::<K>(&p[p0..=p1], &q[q0..=q1], cut, Seen::NONE);
         let (fp, fq) = w.features();
         out.push((shift(fp, p0), shift(fq, q0), Err(w)));
     }
