@@ -417,6 +417,11 @@ impl Kernel for Robust {
 /// no-underflow assumptions provably hold, our rescaling pipeline everywhere else.
 #[inline(never)]
 fn orient_exact(a: DVec2, b: DVec2, c: DVec2) -> Orientation {
+    // Three points on one horizontal or vertical line (rectilinear input: comb teeth, lot corners):
+    // the determinant is zero because both of its products are, exactly; no expansion needed.
+    if (a.y == c.y && b.y == c.y) || (a.x == c.x && b.x == c.x) {
+        return Orientation::Collinear;
+    }
     // Every coordinate zero or within [2^-400, 2^400]: differences have tails ≥ 2^-452, products of two
     // stay within [2^-957, 2^802], so no operation of Shewchuk's stages overflows or underflows.
     const LO: f64 = f64::from_bits((1023 - 400) << 52);

@@ -141,6 +141,29 @@ proptest! {
     }
 
     #[test]
+    fn axis_aligned_triples(a in any_point(), b in any_point(), c in any_point()) {
+        // Three points on one horizontal or vertical line (an exact zero that Robust decides
+        // without expansions), in every order, and two on such a line with the third anywhere.
+        let h = |p: DVec2| DVec2::new(p.x, a.y);
+        let v = |p: DVec2| DVec2::new(a.x, p.y);
+        check_every_kernel(a, h(b), h(c), b);
+        check_every_kernel(h(c), a, h(b), c);
+        check_every_kernel(v(b), v(c), a, b);
+        check_every_kernel(a, h(b), c, b);
+        check_every_kernel(v(b), a, c, c);
+    }
+
+    #[test]
+    fn tiny_lattice_points(xy in proptest::array::uniform8(-4i32..=4)) {
+        // Points of a small lattice scaled by 2^-540: every product is below the static filters'
+        // absolute slack, so every decision takes the exact stage (and its shortcut for points on one
+        // horizontal or vertical line, which a third of these triples are).
+        let s = 2f64.powi(-540);
+        let p = |i: usize| DVec2::new(f64::from(xy[2 * i]), f64::from(xy[2 * i + 1])) * s;
+        check_every_kernel(p(0), p(1), p(2), p(3));
+    }
+
+    #[test]
     fn exactly_degenerate(a in any_point(), b in any_point()) {
         // Repeated points and exact ties.
         check_every_kernel(a, a, a, a);
