@@ -371,7 +371,8 @@ const BOUNDS_SLACK: f64 = 4.0 * BOUNDS_U;
 /// For a vertex–edge candidate the bounds are those of the distance to the edge's *line*, which is
 /// never larger than the distance to the segment (so `lo` bounds every candidate) and equals it when
 /// the foot is strictly inside the edge (so `hi` bounds the admitted candidates of an
-/// `interior_only` scan, the only ones that can become the best).
+/// `interior_only` scan, the only ones that can become the best). For a vertical or horizontal
+/// edge that line distance is one coordinate difference, bounded as a point pair's.
 ///
 /// Why they hold. A sum of two squares of rounded differences `ŝ` is within `(4u + 20u²)ŝ` of the
 /// exact value, and a difference of two products of rounded differences `ĉ = t̂₁ − t̂₂` within
@@ -384,21 +385,30 @@ const BOUNDS_SLACK: f64 = 4.0 * BOUNDS_U;
 /// inside the `64u²` slack. Non-finite values give `(0, ∞)`.
 fn bounds(c: Cand, p: &[DVec2], q: &[DVec2]) -> (f64, f64) {
     let give_up = (0.0, f64::INFINITY);
-    let (v, s, t) = match c {
-        Cand::Vv(i, j) => {
-            let d = p[i] - q[j];
-            let sq = d.x * d.x + d.y * d.y;
-            let e = BOUNDS_ERR * sq;
-            let (lo, hi) = (sq - (e + e), sq + (e + e));
-            return if sq.is_finite() && lo >= BOUNDS_TINY {
-                (lo, hi)
-            } else {
-                give_up
-            };
+    // `|d|²` for a difference vector `d` of rounded coordinate differences.
+    let squared = |d: DVec2| {
+        let sq = d.x * d.x + d.y * d.y;
+        let e = BOUNDS_ERR * sq;
+        let (lo, hi) = (sq - (e + e), sq + (e + e));
+        if sq.is_finite() && lo >= BOUNDS_TINY {
+            (lo, hi)
+        } else {
+            give_up
         }
+    };
+    let (v, s, t) = match c {
+        Cand::Vv(i, j) => return squared(p[i] - q[j]),
         Cand::PvQe(i, j) => (p[i], q[j], q[j + 1]),
         Cand::QvPe(j, i) => (q[j], p[i], p[i + 1]),
     };
+    // A vertical or horizontal edge: the squared distance to its line is that of one coordinate
+    // difference (rectilinear input: comb teeth), bounded as a point pair's.
+    if s.x == t.x && s.y != t.y {
+        return squared(DVec2::new(v.x - s.x, 0.0));
+    }
+    if s.y == t.y && s.x != t.x {
+        return squared(DVec2::new(0.0, v.y - s.y));
+    }
     let (e, w) = (t - s, v - s);
     let (t1, t2) = (e.x * w.y, e.y * w.x);
     let cr = t1 - t2;
@@ -1151,13 +1161,21 @@ mod tests {
     fn bounds_bracket_the_exact_squared_distance() {
         let mut rng = SplitMix64::new(0xb0d5);
         let (mut bracketed, mut near) = (0, 0);
-        for round in 0..24_000 {
-            let class = round % 6;
-            let p: Vec<DVec2> = (0..2).map(|_| point(&mut rng, class % 5)).collect();
-            let mut q: Vec<DVec2> = (0..2).map(|_| point(&mut rng, class % 5)).collect();
+        for round in 0..32_000 {
+            let class = round % 8;
+            // Classes 6 and 7: vertical and horizontal edges, with points of every scale.
+            let scale = if class < 6 { class % 5 } else { round / 8 % 5 };
+            let mut p: Vec<DVec2> = (0..2).map(|_| point(&mut rng, scale)).collect();
+            let mut q: Vec<DVec2> = (0..2).map(|_| point(&mut rng, scale)).collect();
             if class == 5 {
                 // Near incidence: q[0] rounded onto P's edge, where the error bounds are all there is.
                 q[0] = p[0] + (p[1] - p[0]) * rng.unit_f64();
+            }
+            if class == 6 {
+                (p[1].x, q[1].x) = (p[0].x, q[0].x);
+            }
+            if class == 7 {
+                (p[1].y, q[1].y) = (p[0].y, q[0].y);
             }
             for c in [Cand::Vv(0, 1), Cand::PvQe(1, 0), Cand::QvPe(0, 0)] {
                 // (QvPe(0, 0) is q[0] against P's edge: the near-incident candidate of class 5.)
