@@ -951,9 +951,10 @@ pub(crate) fn build_with_hulls<K: Kernel>(
 
 /// Step 4: the runs of the geodesic `path` with their arms (each run prolonged beyond its ends to
 /// the first boundary point). The arms are walked in the triangulation while the walks stay within
-/// `budget` triangle steps in all (`8n + 64`: the common case, short arms, `O(n)`); past it the
-/// remaining arms are read from the extensions of the two shortest-path trees from `path`'s ends
-/// ([`extensions`], `O(n)`), whose edges the runs are. So step 4 costs `O(n)` in all (the paper's
+/// `budget` triangle steps in all (`8n + 64`: the common case, short arms, `O(n)`); past it, or as
+/// soon as the steps of the first [`EXTRAPOLATE_AFTER`] or more arms, extrapolated to all of them,
+/// exceed it, the remaining arms are read from the extensions of the two shortest-path trees from
+/// `path`'s ends ([`extensions`], `O(n)`), whose edges the runs are. So step 4 costs `O(n)` in all (the paper's
 /// bound), where the walks alone cost `Θ(n²)` in the worst case. Both give the same hits (tested).
 fn runs_with_arms<K: Kernel>(
     tri: &Triangulation,
@@ -966,7 +967,18 @@ fn runs_with_arms<K: Kernel>(
     let k = path.len() - 1;
     // The trees from the path's start (forward arms) and end (backward arms), built on demand.
     let mut trees: [Option<Extensions>; 2] = [None, None];
+    // Once the arms walked so far, extrapolated to all `2k − 2` arms, would exceed the budget, the
+    // walks stop early: the trees will be built anyway, and the steps left would be spent for
+    // nothing (long corridors: every arm runs far).
+    let (total, arms) = (budget, 2 * k.saturating_sub(1));
+    let mut walked = 0usize;
     let mut arm = |from: usize, through: usize, forward: bool| {
+        if walked >= EXTRAPOLATE_AFTER
+            && (total - budget).saturating_mul(arms) > total.saturating_mul(walked)
+        {
+            budget = 0;
+        }
+        walked += 1;
         let hit = first_hit_within::<K>(tri, ring, from, through, &mut budget).or_else(|| {
             let (slot, s) = if forward { (0, path[0]) } else { (1, path[k]) };
             let tree = trees[slot].get_or_insert_with(|| extensions::<K>(tri, ring, s));
@@ -995,6 +1007,9 @@ fn runs_with_arms<K: Kernel>(
     }
     Some(runs)
 }
+
+/// Arms walked before [`runs_with_arms`] extrapolates their steps to all the arms.
+const EXTRAPOLATE_AFTER: usize = 16;
 
 /// A hit as an end on the ring walked (no pruned pockets).
 fn plain(_: usize, _: usize, hit: Hit) -> Option<End> {
