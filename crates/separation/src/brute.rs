@@ -1157,6 +1157,25 @@ mod tests {
         }
     }
 
+    /// Two chains of 1 to `max` points of one scale class, `Q`'s moved right by `3/4`.
+    fn chain_pair(rng: &mut SplitMix64, class: usize, max: usize) -> (Vec<DVec2>, Vec<DVec2>) {
+        let p = (0..1 + rng.index(max)).map(|_| point(rng, class)).collect();
+        let q = (0..1 + rng.index(max))
+            .map(|_| point(rng, class) + DVec2::new(0.75, 0.0))
+            .collect();
+        (p, q)
+    }
+
+    /// The distance of a scan's pair, from its features in `p` and `q`.
+    fn pair_dist(p: &[DVec2], q: &[DVec2], pair: &ClosestPair) -> Dist2 {
+        match (pair.feature_p, pair.feature_q) {
+            (Feature::Vertex(i), Feature::Vertex(j)) => Dist2::PointPoint(p[i], q[j]),
+            (Feature::Vertex(i), Feature::Edge(j)) => Dist2::PointSegment(p[i], q[j], q[j + 1]),
+            (Feature::Edge(i), Feature::Vertex(j)) => Dist2::PointSegment(q[j], p[i], p[i + 1]),
+            _ => unreachable!("a scan reports a vertex"),
+        }
+    }
+
     #[test]
     fn bounds_bracket_the_exact_squared_distance() {
         let mut rng = SplitMix64::new(0xb0d5);
@@ -1299,20 +1318,9 @@ mod tests {
         let mut rng = SplitMix64::new(0xc07);
         let (mut beaten, mut not) = (0, 0);
         for round in 0..3000 {
-            let class = [0, 1, 4][round % 3];
-            let p: Vec<DVec2> = (0..1 + rng.index(12))
-                .map(|_| point(&mut rng, class))
-                .collect();
-            let q: Vec<DVec2> = (0..1 + rng.index(12))
-                .map(|_| point(&mut rng, class) + DVec2::new(0.75, 0.0))
-                .collect();
+            let (p, q) = chain_pair(&mut rng, [0, 1, 4][round % 3], 12);
             let nearest = scan::<Robust>(&p, &q, true);
-            let near = match (nearest.feature_p, nearest.feature_q) {
-                (Feature::Vertex(i), Feature::Vertex(j)) => Dist2::PointPoint(p[i], q[j]),
-                (Feature::Vertex(i), Feature::Edge(j)) => Dist2::PointSegment(p[i], q[j], q[j + 1]),
-                (Feature::Edge(i), Feature::Vertex(j)) => Dist2::PointSegment(q[j], p[i], p[i + 1]),
-                _ => unreachable!("a scan reports a vertex"),
-            };
+            let near = pair_dist(&p, &q, &nearest);
             // `G`: the nearest pair itself (a tie: nothing beats it), or a random vertex pair.
             let g = if round % 4 == 0 {
                 near
@@ -1361,13 +1369,7 @@ mod tests {
         let mut rng = SplitMix64::new(0x5ee);
         let mut skipped_the_winner = 0;
         for round in 0..3000 {
-            let class = [0, 1, 4][round % 3];
-            let p: Vec<DVec2> = (0..1 + rng.index(10))
-                .map(|_| point(&mut rng, class))
-                .collect();
-            let q: Vec<DVec2> = (0..1 + rng.index(10))
-                .map(|_| point(&mut rng, class) + DVec2::new(0.75, 0.0))
-                .collect();
+            let (p, q) = chain_pair(&mut rng, [0, 1, 4][round % 3], 10);
             let range = |rng: &mut SplitMix64, n: usize| {
                 let a = rng.index(n + 1);
                 let b = a + rng.index(n + 1 - a);
@@ -1383,28 +1385,13 @@ mod tests {
             let mut d = exact(w.cand);
             if !seen.p.is_empty() && !seen.q.is_empty() {
                 let (sp, sq) = (&p[seen.p.clone()], &q[seen.q.clone()]);
-                let inner = scan::<Robust>(sp, sq, true);
-                let di = match (inner.feature_p, inner.feature_q) {
-                    (Feature::Vertex(i), Feature::Vertex(j)) => Dist2::PointPoint(sp[i], sq[j]),
-                    (Feature::Vertex(i), Feature::Edge(j)) => {
-                        Dist2::PointSegment(sp[i], sq[j], sq[j + 1])
-                    }
-                    (Feature::Edge(i), Feature::Vertex(j)) => {
-                        Dist2::PointSegment(sq[j], sp[i], sp[i + 1])
-                    }
-                    _ => unreachable!("a scan reports a vertex"),
-                };
+                let di = pair_dist(sp, sq, &scan::<Robust>(sp, sq, true));
                 if Robust::cmp_dist2(di, d) == Ordering::Less {
                     skipped_the_winner += 1;
                     d = di;
                 }
             }
-            let dw = match (whole.feature_p, whole.feature_q) {
-                (Feature::Vertex(i), Feature::Vertex(j)) => Dist2::PointPoint(p[i], q[j]),
-                (Feature::Vertex(i), Feature::Edge(j)) => Dist2::PointSegment(p[i], q[j], q[j + 1]),
-                (Feature::Edge(i), Feature::Vertex(j)) => Dist2::PointSegment(q[j], p[i], p[i + 1]),
-                _ => unreachable!("a scan reports a vertex"),
-            };
+            let dw = pair_dist(&p, &q, &whole);
             assert_eq!(
                 Robust::cmp_dist2(d, dw),
                 Ordering::Equal,
