@@ -954,8 +954,9 @@ pub(crate) fn build_with_hulls<K: Kernel>(
 /// `budget` triangle steps in all (`8n + 64`: the common case, short arms, `O(n)`); past it, or as
 /// soon as the steps of the first [`EXTRAPOLATE_AFTER`] or more arms, extrapolated to all of them,
 /// exceed it, the remaining arms are read from the extensions of the two shortest-path trees from
-/// `path`'s ends ([`extensions`], `O(n)`), whose edges the runs are. So step 4 costs `O(n)` in all (the paper's
-/// bound), where the walks alone cost `Θ(n²)` in the worst case. Both give the same hits (tested).
+/// `path`'s ends ([`extensions`], `O(n)`), whose edges the runs are. So step 4 costs `O(n)` in all
+/// (the paper's bound), where the walks alone cost `Θ(n²)` in the worst case. Both give the same
+/// hits (tested).
 fn runs_with_arms<K: Kernel>(
     tri: &Triangulation,
     ring: &[DVec2],
@@ -1294,8 +1295,8 @@ fn solve_pass<K: Kernel>(
     stats.separator_segments += b.kept.len();
     stats.cut_fallbacks += b.cut_fallbacks;
     let (mut pcv, mut qcv) = (Vec::new(), Vec::new());
-    // The positions `(plo, phi, qlo, qhi)` of the last subproblem scanned whole, if the one before
-    // this was: their common pairs are not scanned twice.
+    // The positions `(plo, phi, qlo, qhi)` of the last subproblem scanned whole: the pairs it
+    // shares with a later scanned subproblem are not scanned twice.
     let mut last_scanned: Option<(usize, usize, usize, usize)> = None;
     for (i, &((plo, phi), (qlo_all, qhi_all))) in b.sub.iter().enumerate() {
         let parts = match r.gap {
@@ -1380,7 +1381,6 @@ fn solve_pass<K: Kernel>(
                     )
                 })
             };
-            let found_none = found.is_none();
             match found {
                 Some(found) => {
                     stats.subproblems_section3 += 1;
@@ -1397,9 +1397,9 @@ fn solve_pass<K: Kernel>(
                     let w = scan_part::<K>(&pcv, &qcv, cut, seen);
                     let (fp, fq) = w.features();
                     fold(fp, fq, Err(w));
+                    last_scanned = Some((plo, phi, qlo, qhi));
                 }
             }
-            last_scanned = found_none.then_some((plo, phi, qlo, qhi));
         }
     }
 }
