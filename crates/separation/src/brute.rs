@@ -485,7 +485,7 @@ pub(crate) fn scan_winner_below_except<K: Kernel>(
 /// vertex–edge pair whose vertex and both edge ends are in them. Consecutive subproblems of the
 /// separator share an edge at each end (a cut falls inside it and both subchains keep it whole), and
 /// on small subproblems these pairs are a quarter of the scan.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug)]
 pub(crate) struct Seen {
     pub(crate) p: Range<usize>,
     pub(crate) q: Range<usize>,
@@ -1380,9 +1380,8 @@ mod tests {
                 q: range(&mut rng, q.len()),
             };
             let whole = scan::<Robust>(&p, &q, true);
-            let exact = |c: Cand| c.dist(&p, &q);
             let (w, _) = scan_winner_below_except::<Robust>(&p, &q, f64::INFINITY, seen.clone());
-            let mut d = exact(w.cand);
+            let mut d = w.cand.dist(&p, &q);
             if !seen.p.is_empty() && !seen.q.is_empty() {
                 let (sp, sq) = (&p[seen.p.clone()], &q[seen.q.clone()]);
                 let di = pair_dist(sp, sq, &scan::<Robust>(sp, sq, true));

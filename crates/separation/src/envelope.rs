@@ -823,15 +823,11 @@ pub(crate) fn prepare<K: Kernel>(
         }
     }
     level.close(0);
-    let closing = cl
-        .edges
-        .len()
-        .checked_sub(1)
-        .filter(|_| cl.edges.len() == m);
-    let Some(z) = closing else {
+    // A closed chain has as many edges as vertices, its closing edge (`m − 1` → 0) last.
+    if m == 0 || cl.edges.len() != m {
         return to_prepared::<K>(&c, &cl, level.env(0), which);
-    };
-    // A closed chain: the closing edge (`m − 1` → 0) merged in.
+    }
+    let z = m - 1;
     let (u, w, _) = cl.edges[z];
     leaf::<K>(&c, z, (u, w), &mut level);
     let mut out = Level::with_capacity(level.bps.len());
