@@ -410,7 +410,15 @@ fn bounds(c: Cand, p: &[DVec2], q: &[DVec2]) -> (f64, f64) {
         return squared(DVec2::new(0.0, v.y - s.y));
     }
     let (e, w) = (t - s, v - s);
-    let (t1, t2) = (e.x * w.y, e.y * w.x);
+    quotient_bounds(e.x * w.y, e.y * w.x, e).map_or(give_up, |(lo, hi, _)| (lo, hi))
+}
+
+/// Bounds `lo ≤ (t₁ − t₂)²/|e|² ≤ hi` for products `t₁`, `t₂` of rounded coordinate differences
+/// (a cross or, with `t₂` negated, a dot product of two difference vectors) and a rounded
+/// difference vector `e`, with the sign of `t₁ − t₂` when it is certain (else `Zero`); [`bounds`]
+/// gives the analysis. `None` on overflow, for a tiny `e`, or for products small enough to have
+/// underflowed.
+fn quotient_bounds(t1: f64, t2: f64, e: DVec2) -> Option<(f64, f64, Sign)> {
     let cr = t1 - t2;
     let cr_err = BOUNDS_ERR * (t1.abs() + t2.abs());
     let len = e.x * e.x + e.y * e.y;
@@ -420,28 +428,82 @@ fn bounds(c: Cand, p: &[DVec2], q: &[DVec2]) -> (f64, f64) {
     let (l_lo, l_hi) = (len - (len_err + len_err), len + (len_err + len_err));
     if !(c_hi.is_finite() && l_hi.is_finite()) || l_lo < BOUNDS_TINY || cr_err < BOUNDS_TINY {
         // Overflow, a tiny edge, or products small enough to have underflowed: no bound.
-        return give_up;
+        return None;
     }
     let (hi_num, lo_num) = (c_hi * c_hi, c_lo.max(0.0) * c_lo.max(0.0));
     if !hi_num.is_finite() {
         // An overflowing square (coordinates near 2^500): no bound.
-        return give_up;
+        return None;
     }
     let hi = (hi_num / l_lo) * (1.0 + BOUNDS_SLACK);
     if hi < BOUNDS_TINY {
         // The quotient may have lost bits to underflow: no bound.
-        return give_up;
+        return None;
     }
+    // The computed difference is within `cr_err` of the exact one, so a margin of twice that
+    // fixes the sign.
+    let sign = if c_lo > 0.0 {
+        Sign::of_f64(cr)
+    } else {
+        Sign::Zero
+    };
     // A numerator or quotient below 2^-900 may have lost bits to underflow: the lower bound is 0.
     let lo = if lo_num < BOUNDS_TINY {
         0.0
     } else {
         (lo_num / l_hi) * (1.0 - BOUNDS_SLACK)
     };
-    if lo < BOUNDS_TINY {
-        (0.0, hi)
-    } else {
-        (lo, hi)
+    Some((if lo < BOUNDS_TINY { 0.0 } else { lo }, hi, sign))
+}
+
+/// Where the pairs of a separator subproblem lie. Lemma 1 gives subproblem `i` only pairs whose
+/// segment meets its separator `l_i` (notes 4.8, `docs/algorithms/separator.md`), so each point of
+/// such a pair lies within the pair's distance of `l_i`: a point farther from `l_i` than the best
+/// distance known is in no pair the subproblem has to find. `l_i` lies on the line through `a` and
+/// `c`, and its positions along that line, `t(x) = (x − a)·(c − a)`, are at least the lesser of the
+/// two `before` points' and at most the greater of the two `after` points' (a separator's end
+/// inside an edge lies between the edge's ends).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Near {
+    pub(crate) a: DVec2,
+    pub(crate) c: DVec2,
+    pub(crate) before: [DVec2; 2],
+    pub(crate) after: [DVec2; 2],
+}
+
+impl Near {
+    /// A lower bound of the squared distance from every point of the box `lo..=hi` to `l_i`: the
+    /// box lies wholly on one side of the line, before `l_i`'s start or after its end, by at least
+    /// that much at each corner (and so everywhere in it: each is a half-plane). `0` when no such
+    /// bound is certain. At most twenty [`quotient_bounds`].
+    fn box_gap2(&self, lo: DVec2, hi: DVec2) -> f64 {
+        let corners = [lo, DVec2::new(hi.x, lo.y), DVec2::new(lo.x, hi.y), hi];
+        let d = self.c - self.a;
+        // The least lower bound over the corners of a quantity that must have the sign `want` at
+        // every corner; `None` when one corner's sign is not certainly `want`.
+        let least = |f: &dyn Fn(DVec2) -> Option<(f64, f64, Sign)>, want: Sign| {
+            corners.iter().try_fold(f64::INFINITY, |m, &x| match f(x) {
+                Some((b, _, s)) if s == want => Some(m.min(b)),
+                _ => None,
+            })
+        };
+        // Depth: `d × (x − a)`; before `y`: `(y − x)·d`; after `y`: `(x − y)·d`.
+        let depth = |x: DVec2| {
+            let w = x - self.a;
+            quotient_bounds(d.x * w.y, d.y * w.x, d)
+        };
+        let along = |w: DVec2| quotient_bounds(d.x * w.x, -(d.y * w.y), d);
+        let sides = [
+            least(&depth, Sign::Positive),
+            least(&depth, Sign::Negative),
+            least(&|x| along(self.before[0] - x), Sign::Positive)
+                .zip(least(&|x| along(self.before[1] - x), Sign::Positive))
+                .map(|(u, v)| u.min(v)),
+            least(&|x| along(x - self.after[0]), Sign::Positive)
+                .zip(least(&|x| along(x - self.after[1]), Sign::Positive))
+                .map(|(u, v)| u.min(v)),
+        ];
+        sides.into_iter().flatten().fold(0.0, f64::max)
     }
 }
 
@@ -615,6 +677,15 @@ fn box_gap(a: &BoxNode, b: &BoxNode) -> Dist2 {
     Dist2::PointPoint(DVec2::new(xa, ya), DVec2::new(xb, yb))
 }
 
+/// Whether the squared length of a [`box_gap`] is certainly greater than `cut` ([`bounds`]' lower
+/// bound of it is).
+fn gap_beyond(gap: Dist2, cut: f64) -> bool {
+    match gap {
+        Dist2::PointPoint(x, y) => cut.is_finite() && bounds(Cand::Vv(0, 0), &[x], &[y]).0 > cut,
+        _ => false,
+    }
+}
+
 /// [`scan`] with exact pruning: both chains get a hierarchy of bounding boxes, and a pair of nodes
 /// is skipped when the squared distance between their boxes is exactly greater than the best
 /// candidate's (every vertex and edge a node owns lies in its box, so none of its pairs can be
@@ -624,18 +695,24 @@ fn box_gap(a: &BoxNode, b: &BoxNode) -> Dist2 {
 /// chains are long and mostly far from each other, far fewer. `O(n_p + n_q)` extra space.
 #[cfg(test)]
 pub(crate) fn scan_pruned<K: Kernel>(p: &[DVec2], q: &[DVec2], interior_only: bool) -> ClosestPair {
-    scan_pruned_best::<K>(p, q, interior_only, f64::INFINITY)
+    scan_pruned_best::<K>(p, q, interior_only, f64::INFINITY, None)
         .0
         .pair(p, q)
 }
 
-/// [`scan_winner_below`] with [`scan_pruned`]'s exact pruning.
+/// [`scan_winner_below`] with [`scan_pruned`]'s exact pruning, which also skips the pairs of boxes
+/// certainly farther apart than `√cut` (their candidates cannot beat `cut`). With `near`, the box
+/// nodes whose
+/// points are all certainly farther from `l_i` than the best candidate so far (or than `√cut`)
+/// are skipped as well: the winner is then the nearest pair with both points within its own
+/// distance of `l_i` when that beats `cut`, and some pair of the chains otherwise.
 pub(crate) fn scan_pruned_winner_below<K: Kernel>(
     p: &[DVec2],
     q: &[DVec2],
     cut: f64,
+    near: Option<&Near>,
 ) -> (Winner, f64) {
-    let (c, hi) = scan_pruned_best::<K>(p, q, true, cut);
+    let (c, hi) = scan_pruned_best::<K>(p, q, true, cut, near);
     (c.winner(p, q), hi)
 }
 
@@ -644,21 +721,35 @@ fn scan_pruned_best<K: Kernel>(
     q: &[DVec2],
     interior_only: bool,
     cut: f64,
+    near: Option<&Near>,
 ) -> (Cand, f64) {
     let (bp, bq) = (boxes(p), boxes(q));
+    // Each node's lower bound of its squared distance to `l_i`, found when the node is first
+    // tested (`NaN` before; none without `near`).
+    let unknown = |nodes: &[BoxNode]| vec![f64::NAN; if near.is_some() { nodes.len() } else { 0 }];
+    let (mut gp, mut gq) = (unknown(&bp), unknown(&bq));
+    let far = |gaps: &mut [f64], nodes: &[BoxNode], k: usize, u: f64| {
+        let (Some(n), Some(g)) = (near, gaps.get_mut(k)) else {
+            return false;
+        };
+        if g.is_nan() {
+            *g = n.box_gap2(nodes[k].lo, nodes[k].hi);
+        }
+        *g > u
+    };
     let mut best = Cand::Vv(0, 0);
     let dist = |c: Cand| c.scan_dist(p, q, interior_only);
     let mut best_d = dist(best);
     // As in `scan`: with `interior_only`, candidates bounded strictly above the best (or above
     // `cut`) are skipped and candidates bounded strictly below it are taken.
-    let mut best_b = best.scan_bounds(p, q, interior_only);
-    let mut consider = |c: Cand, best: &mut Cand, best_d: &mut Dist2| {
+    let best_b = core::cell::Cell::new(best.scan_bounds(p, q, interior_only));
+    let consider = |c: Cand, best: &mut Cand, best_d: &mut Dist2| {
         let b = c.scan_bounds(p, q, interior_only);
-        if b.0 > best_b.1 || b.0 > cut || !admitted::<K>(c, p, q, interior_only) {
+        if b.0 > best_b.get().1 || b.0 > cut || !admitted::<K>(c, p, q, interior_only) {
             return;
         }
         let d = dist(c);
-        let order = if b.1 < best_b.0 {
+        let order = if b.1 < best_b.get().0 {
             Ordering::Less
         } else {
             cmp_scan::<K>(d, *best_d)
@@ -666,7 +757,7 @@ fn scan_pruned_best<K: Kernel>(
         if order == Ordering::Less || (order == Ordering::Equal && c < *best) {
             *best = c;
             *best_d = d;
-            best_b = b;
+            best_b.set(b);
         }
     };
     let approx = |a: &BoxNode, b: &BoxNode| {
@@ -677,7 +768,16 @@ fn scan_pruned_best<K: Kernel>(
     let mut stack = vec![(0usize, 0usize)];
     while let Some((a, b)) = stack.pop() {
         let (na, nb) = (&bp[a], &bq[b]);
-        if K::cmp_dist2(box_gap(na, nb), best_d) == Ordering::Greater {
+        // Boxes certainly farther apart than `√cut` hold no candidate the scan would take; nor
+        // do boxes farther apart than the best candidate.
+        let gap = box_gap(na, nb);
+        if gap_beyond(gap, cut) || K::cmp_dist2(gap, best_d) == Ordering::Greater {
+            continue;
+        }
+        // A node certainly farther from `l_i` than the best so far holds no point of a pair the
+        // subproblem must find (`Near`).
+        let u = cut.min(best_b.get().1);
+        if far(&mut gp, &bp, a, u) || far(&mut gq, &bq, b, u) {
             continue;
         }
         let split_a = match (na.kids, nb.kids) {
@@ -714,7 +814,7 @@ fn scan_pruned_best<K: Kernel>(
         }
         stack.extend(next);
     }
-    (best, best_b.1)
+    (best, best_b.get().1)
 }
 
 /// The window of [`scan_windowed`] over the other chain's keys `ty`: its ends only move forward,
@@ -1310,6 +1410,113 @@ mod tests {
         assert!(claimed > 20_000 && refused > 20_000, "{claimed} {refused}");
     }
 
+    /// `Near::box_gap2` never exceeds the exact squared distance from a point of the box to the
+    /// part of the line between the `before` and `after` positions (checked at the corners and at
+    /// random points inside, in rationals), and is positive often enough to prune.
+    #[test]
+    fn near_box_gaps_are_lower_bounds() {
+        let mut rng = SplitMix64::new(0x9ea5);
+        let (mut positive, mut zero) = (0, 0);
+        let r = |x: f64| to_rational(x).expect("finite");
+        for round in 0..6_000 {
+            let class = round % 5;
+            let mut pt = || point(&mut rng, class);
+            let (a, c) = (pt(), pt());
+            if a == c {
+                continue;
+            }
+            let near = Near {
+                a,
+                c,
+                before: [pt(), pt()],
+                after: [pt(), pt()],
+            };
+            let (x0, x1) = (pt(), pt());
+            let (lo, hi) = (x0.min(x1), x0.max(x1));
+            let g = near.box_gap2(lo, hi);
+            if g == 0.0 {
+                zero += 1;
+                continue;
+            }
+            positive += 1;
+            let (dx, dy) = (r(c.x) - r(a.x), r(c.y) - r(a.y));
+            let t = |y: DVec2| (r(y.x) - r(a.x)) * dx.clone() + (r(y.y) - r(a.y)) * dy.clone();
+            let (t0, t1) = {
+                let ts = near.before.iter().chain(&near.after).map(|&y| t(y));
+                let ts: Vec<_> = ts.collect();
+                let lo_t = ts[..2].iter().min().cloned().expect("two");
+                let hi_t = ts[2..].iter().max().cloned().expect("two");
+                (lo_t, hi_t)
+            };
+            if t0 > t1 {
+                // No segment lies between such positions.
+                continue;
+            }
+            let len = dx.clone() * dx.clone() + dy.clone() * dy.clone();
+            let zero_r = r(0.0);
+            let mut samples = vec![lo, hi, DVec2::new(lo.x, hi.y), DVec2::new(hi.x, lo.y)];
+            samples.extend(
+                (0..4).map(|_| lo + (hi - lo) * DVec2::new(rng.unit_f64(), rng.unit_f64())),
+            );
+            for x in samples
+                .into_iter()
+                .filter(|x| x.cmpge(lo).all() && x.cmple(hi).all())
+            {
+                let (wx, wy) = (r(x.x) - r(a.x), r(x.y) - r(a.y));
+                let depth = dx.clone() * wy - dy.clone() * wx;
+                let tx = t(x);
+                let beyond = (t0.clone() - tx.clone())
+                    .max(tx - t1.clone())
+                    .max(zero_r.clone());
+                // Squared distance to the points of the line with `t0 ≤ t ≤ t1`, times `|d|²`
+                // squared away: (depth² + beyond²) / |d|².
+                let exact = (depth.clone() * depth + beyond.clone() * beyond) / len.clone();
+                assert!(exact >= r(g), "{near:?} box {lo} {hi} at {x}: gap {g}");
+            }
+        }
+        assert!(positive > 2_000 && zero > 500, "{positive} {zero}");
+    }
+
+    /// The pruned scan with `Near` keeps a pair that meets the separator: on chains of up to 80
+    /// points and a separator through a vertex of their nearest pair (in a random direction,
+    /// stretched both ways), its winner is as near as the plain scan's, exactly.
+    #[test]
+    fn pruned_scan_near_the_separator_keeps_the_pair_meeting_it() {
+        let mut rng = SplitMix64::new(0x5e9a);
+        let mut pruned = 0;
+        for round in 0..1_500 {
+            let (p, q) = chain_pair(&mut rng, [0, 1, 4][round % 3], 80);
+            let nearest = scan::<Robust>(&p, &q, true);
+            let d = pair_dist(&p, &q, &nearest);
+            let anchor = match (nearest.feature_p, nearest.feature_q) {
+                (Feature::Vertex(i), _) => p[i],
+                (_, Feature::Vertex(j)) => q[j],
+                _ => unreachable!("a scan reports a vertex"),
+            };
+            let dir = DVec2::new(rng.range_i64(-3, 4) as f64, rng.range_i64(1, 4) as f64) / 64.0;
+            let (s0, s1) = (rng.index(3) as f64, rng.index(3) as f64);
+            let near = Near {
+                a: anchor,
+                c: anchor + dir,
+                before: [anchor - dir * s0; 2],
+                after: [anchor + dir * s1, anchor],
+            };
+            let boxes_far = boxes(&p)
+                .iter()
+                .chain(&boxes(&q))
+                .filter(|b| near.box_gap2(b.lo, b.hi) > 0.0)
+                .count();
+            pruned += usize::from(boxes_far > 0);
+            let (w, _) = scan_pruned_winner_below::<Robust>(&p, &q, f64::INFINITY, Some(&near));
+            assert_eq!(
+                Robust::cmp_dist2(w.cand.dist(&p, &q), d),
+                Ordering::Equal,
+                "{p:?} {q:?} {near:?}"
+            );
+        }
+        assert!(pruned > 300, "{pruned}");
+    }
+
     /// With a cut from the distance `G` of some pair, the scans skip what cannot beat `G`: when the
     /// nearest pair is strictly nearer than `G` they return the scan's features exactly; otherwise
     /// a pair no nearer than the nearest.
@@ -1330,7 +1537,7 @@ mod tests {
             let cut = upper_bound::<Robust>(g);
             for (w, hi) in [
                 scan_winner_below::<Robust>(&p, &q, cut),
-                scan_pruned_winner_below::<Robust>(&p, &q, cut),
+                scan_pruned_winner_below::<Robust>(&p, &q, cut, None),
             ] {
                 let got = w.pair();
                 let gd = w.cand.dist(&p, &q);

@@ -69,6 +69,11 @@ pub struct SeparationStats {
     /// 256 vertex pairs, where section 3's set-up costs more), and those whose subchains cross the
     /// line of `l_i` more often than `split` hands to section 3 (clip points are not built).
     pub subproblems_scanned: usize,
+    /// Separator route only: of the scanned subproblems, those of more than 256 vertex pairs (the
+    /// quadratic case: they cross the line of `l_i` too often for `split`). They are scanned last,
+    /// pruned by bounding boxes against the best answer of all other subproblems and by their
+    /// distance to `l_i`.
+    pub subproblems_scanned_large: usize,
     /// Separator route only: cuts not found where the construction puts them (0 under the exact
     /// kernels in every test); the subchain then runs to the end of its wall, which is still sound.
     pub cut_fallbacks: usize,

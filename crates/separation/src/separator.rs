@@ -30,7 +30,7 @@ use polydist_polygon::{Feature, SimplePolygon, convex_hull_of_two_with};
 #[cfg(test)]
 use crate::brute::separation_brute;
 use crate::brute::{
-    Seen, Winner, cmp_scan, farther_from_line_than, scan_pruned_winner_below,
+    Near, Seen, Winner, cmp_scan, farther_from_line_than, scan_pruned_winner_below,
     scan_winner_below_except, upper_bound,
 };
 use crate::error::SeparationError;
@@ -1240,8 +1240,32 @@ fn solve_with<K: Kernel>(
     let (p, q) = if plan.swapped { (q, p) } else { (p, q) };
     let mut stats = SeparationStats::default();
     let mut best: Option<Best> = None;
-    for b in &plan.passes {
-        solve_pass::<K>(p, q, b, scan_below, &mut stats, &mut best);
+    // The large subproblems that must be scanned whole wait for every other one: their scans skip
+    // what cannot beat the best answer, and what lies farther from their separator ([`Near`]).
+    let mut later = vec![Vec::new(); plan.passes.len()];
+    for (b, later) in plan.passes.iter().zip(&mut later) {
+        solve_pass::<K>(
+            p,
+            q,
+            b,
+            scan_below,
+            &mut stats,
+            &mut best,
+            Pick::Defer(later),
+        );
+    }
+    for (b, later) in plan.passes.iter().zip(&later) {
+        if !later.is_empty() {
+            solve_pass::<K>(
+                p,
+                q,
+                b,
+                scan_below,
+                &mut stats,
+                &mut best,
+                Pick::Only(later),
+            );
+        }
     }
     let Best { found, .. } = best.ok_or(SeparationError::Inconsistent)?;
     let pair = match found {
@@ -1281,7 +1305,17 @@ struct Best {
     cut: f64,
 }
 
-/// The subproblems of one pass, folded into `best`.
+/// Which parts of a pass's subproblems [`solve_pass`] takes, as `(subproblem, part)`: a part is one
+/// side of the region's gap.
+enum Pick<'a> {
+    /// Every part, except that those to be scanned whole with more than [`PRUNE_ABOVE`] vertex
+    /// pairs are left for later, in order.
+    Defer(&'a mut Vec<(usize, usize)>),
+    /// Only these (in order), whatever their size.
+    Only(&'a [(usize, usize)]),
+}
+
+/// The subproblems of one pass, those `pick` takes, folded into `best`.
 fn solve_pass<K: Kernel>(
     p: &SimplePolygon,
     q: &SimplePolygon,
@@ -1289,11 +1323,14 @@ fn solve_pass<K: Kernel>(
     scan_below: usize,
     stats: &mut SeparationStats,
     best: &mut Option<Best>,
+    mut pick: Pick<'_>,
 ) {
     let (vp, vq) = (p.vertices(), q.vertices());
     let r = &b.region;
-    stats.separator_segments += b.kept.len();
-    stats.cut_fallbacks += b.cut_fallbacks;
+    if let Pick::Defer(_) = pick {
+        stats.separator_segments += b.kept.len();
+        stats.cut_fallbacks += b.cut_fallbacks;
+    }
     let (mut pcv, mut qcv) = (Vec::new(), Vec::new());
     // The positions `(plo, phi, qlo, qhi)` of the last subproblem scanned whole: the pairs it
     // shares with a later scanned subproblem are not scanned twice.
@@ -1305,8 +1342,10 @@ fn solve_pass<K: Kernel>(
         };
         let s = &b.runs[b.kept[i]];
         let (a, c) = (r.ring[s.lo], r.ring[s.hi]);
-        for (qlo, qhi) in parts {
-            if qlo > qhi {
+        // Built for the scans that need it only (most subproblems are small).
+        let near = || near_of(r, s);
+        for (part, (qlo, qhi)) in parts.into_iter().enumerate() {
+            if qlo > qhi || matches!(pick, Pick::Only(o) if o.binary_search(&(i, part)).is_err()) {
                 continue;
             }
             let Some((qlo, qhi)) = trimmed(r, qlo, qhi) else {
@@ -1331,7 +1370,6 @@ fn solve_pass<K: Kernel>(
             pcv.extend((plo..=phi).map(at_p));
             qcv.clear();
             qcv.extend((qlo..=qhi).map(|k| r.ring[k]));
-            stats.subproblem_vertices += pcv.len() + qcv.len();
             // Candidates that cannot beat the best so far are skipped by the scans.
             let mut fold = |fp: Feature, fq: Feature, found| {
                 // Subchain features to internal features.
@@ -1366,21 +1404,29 @@ fn solve_pass<K: Kernel>(
                 }
             };
             // Small subproblems are scanned: section 3's set-up costs more than the few pairs.
-            let found = if pcv.len() * qcv.len() <= scan_below {
+            // Deferred ones were refused by `split` already.
+            let found = if pcv.len() * qcv.len() <= scan_below || matches!(pick, Pick::Only(_)) {
                 None
             } else {
                 split::<K>(&pcv, &qcv, a, c).and_then(|jobs| {
                     execute::<K>(
                         &pcv,
                         &qcv,
-                        a,
-                        c,
+                        (a, c),
+                        near,
                         &jobs,
                         cut,
                         &mut stats.subproblem_parts_swept,
                     )
                 })
             };
+            if found.is_none() && pcv.len() * qcv.len() > PRUNE_ABOVE {
+                if let Pick::Defer(later) = &mut pick {
+                    later.push((i, part));
+                    continue;
+                }
+            }
+            stats.subproblem_vertices += pcv.len() + qcv.len();
             match found {
                 Some(found) => {
                     stats.subproblems_section3 += 1;
@@ -1390,14 +1436,19 @@ fn solve_pass<K: Kernel>(
                 }
                 None => {
                     stats.subproblems_scanned += 1;
+                    stats.subproblems_scanned_large +=
+                        usize::from(pcv.len() * qcv.len() > PRUNE_ABOVE);
                     let seen = last_scanned.map_or(Seen::NONE, |(p0, p1, q0, q1)| Seen {
                         p: overlap(plo, phi, p0, p1),
                         q: overlap(qlo, qhi, q0, q1),
                     });
-                    let w = scan_part::<K>(&pcv, &qcv, cut, seen);
+                    let w = scan_part::<K>(&pcv, &qcv, cut, seen, near);
                     let (fp, fq) = w.features();
                     fold(fp, fq, Err(w));
-                    last_scanned = Some((plo, phi, qlo, qhi));
+                    // A pruned scan leaves out pairs far from `l_i`, which a later subproblem may
+                    // have to find: it counts as seeing nothing.
+                    last_scanned =
+                        (pcv.len() * qcv.len() <= PRUNE_ABOVE).then_some((plo, phi, qlo, qhi));
                 }
             }
         }
@@ -1463,18 +1514,45 @@ fn trimmed(r: &Region, qlo: usize, qhi: usize) -> Option<(usize, usize)> {
     Some((first.saturating_sub(1).max(qlo), (last + 1).min(qhi)))
 }
 
-/// The exact scan of two parts: pruned by bounding boxes when large (the containing case's long
-/// subchains), with the same answer; candidates whose squared distance is bounded strictly above
-/// `cut` (the best answer so far's) are skipped, so the winner is the parts' nearest pair when that
-/// beats the best so far, and some pair of the parts otherwise.
+/// The exact scan of two parts of subproblem `i`: candidates whose squared distance is bounded
+/// strictly above `cut` (the best answer so far's) are skipped, so the winner is the parts' nearest
+/// pair when that beats the best so far, and some pair of the parts otherwise.
 ///
-/// The plain scan also leaves out the pairs of `seen` (which an earlier scan took); the pruned one
-/// takes every pair.
-fn scan_part<K: Kernel>(p: &[DVec2], q: &[DVec2], cut: f64, seen: Seen) -> Winner {
+/// When large (the containing case's long subchains, subproblems that cross their line too often
+/// for [`split`]) the scan is pruned by bounding boxes, and also by the distance to `l_i`
+/// ([`Near`]): its winner is then the nearest pair the subproblem must find (Lemma 1 assigns it
+/// only pairs meeting `l_i`) when that beats the best so far. The plain scan leaves out the pairs of
+/// `seen` (which an earlier scan took).
+fn scan_part<K: Kernel>(
+    p: &[DVec2],
+    q: &[DVec2],
+    cut: f64,
+    seen: Seen,
+    near: impl Fn() -> Near,
+) -> Winner {
     if p.len() * q.len() > PRUNE_ABOVE {
-        scan_pruned_winner_below::<K>(p, q, cut).0
+        scan_pruned_winner_below::<K>(p, q, cut, Some(&near())).0
     } else {
         scan_winner_below_except::<K>(p, q, cut, seen).0
+    }
+}
+
+/// Where `l_i = s` lies, for the scans ([`Near`]): on the line of its run, between the run's
+/// vertices or its arms' ends (an arm ending inside a ring edge ends between that edge's ends).
+fn near_of(r: &Region, s: &Seg) -> Near {
+    let end = |x: End, run_vertex: usize| match x {
+        End::Run => [r.ring[run_vertex]; 2],
+        End::Vertex(w) => [r.ring[w]; 2],
+        End::Edge(e) => {
+            let (u, w) = r.edge(e);
+            [u, w]
+        }
+    };
+    Near {
+        a: r.ring[s.lo],
+        c: r.ring[s.hi],
+        before: end(s.bottom, s.lo),
+        after: end(s.top, s.hi),
     }
 }
 
@@ -1489,14 +1567,15 @@ fn overlap(lo: usize, hi: usize, lo0: usize, hi0: usize) -> core::ops::Range<usi
 /// scan's winner.
 type Candidate = (Feature, Feature, Result<ClosestPair, Winner>);
 
-/// Runs `jobs` on the subchains `p`, `q` (line through `a`, `c`): every candidate, in the
-/// subchains' features; `None` when section 3 rejects a part (the caller scans the subproblem).
-/// Parts the monotone sweep answers instead of section 3 are counted in `swept`.
+/// Runs `jobs` on the subchains `p`, `q` of subproblem `i` (line through `a`, `c`; `near` says
+/// where `l_i` lies, for the scans): every candidate, in the subchains' features; `None` when
+/// section 3 rejects a part (the caller scans the subproblem). Parts the monotone sweep answers
+/// instead of section 3 are counted in `swept`.
 fn execute<K: Kernel>(
     p: &[DVec2],
     q: &[DVec2],
-    a: DVec2,
-    c: DVec2,
+    (a, c): (DVec2, DVec2),
+    near: impl Fn() -> Near,
     jobs: &Jobs,
     cut: f64,
     swept: &mut usize,
@@ -1520,7 +1599,7 @@ fn execute<K: Kernel>(
         out.push((fp, fq, Ok(sep.pair)));
     }
     for &((p0, p1), (q0, q1)) in &jobs.scans {
-        let w = scan_part::<K>(&p[p0..=p1], &q[q0..=q1], cut, Seen::NONE);
+        let w = scan_part::<K>(&p[p0..=p1], &q[q0..=q1], cut, Seen::NONE, &near);
         let (fp, fq) = w.features();
         out.push((shift(fp, p0), shift(fq, q0), Err(w)));
     }
@@ -2018,7 +2097,44 @@ mod tests {
                 ));
             }
         }
+        let d = near_scans::<K>(p, q, &plan);
+        if K::cmp_dist2(d, bd) != Ordering::Equal {
+            return Err(format!(
+                "σ differs with every subproblem scanned near its separator alone: {d:?} against \
+                 the brute force {brute:?}"
+            ));
+        }
         Ok((m, sights_only))
+    }
+
+    /// `σ` as the least answer of every subproblem's scan pruned by its boxes and by its distance
+    /// to `l_i` ([`Near`]), each with no cut from the others: Lemma 1 (notes 4.8) says that the
+    /// subproblem holding the optimal pair finds it so.
+    fn near_scans<K: Kernel>(p: &SimplePolygon, q: &SimplePolygon, plan: &Plan) -> Dist2 {
+        let vp = if plan.swapped { q } else { p }.vertices();
+        let mut best: Option<Dist2> = None;
+        for b in &plan.passes {
+            let r = &b.region;
+            for (i, &((plo, phi), (qlo, qhi))) in b.sub.iter().enumerate() {
+                let parts = match r.gap {
+                    Some(g) if qlo <= g && g < qhi => [(qlo, g), (g + 1, qhi)],
+                    _ => [(qlo, qhi), (1, 0)],
+                };
+                let near = near_of(r, &b.runs[b.kept[i]]);
+                let pc: Vec<DVec2> = (plo..=phi).map(|k| vp[(r.pb + k) % r.np]).collect();
+                for (qlo, qhi) in parts.into_iter().filter(|(lo, hi)| lo <= hi) {
+                    let qc: Vec<DVec2> = (qlo..=qhi).map(|k| r.ring[k]).collect();
+                    let (w, _) =
+                        scan_pruned_winner_below::<K>(&pc, &qc, f64::INFINITY, Some(&near));
+                    let (fp, fq) = w.features();
+                    let d = dist_of(&pc, &qc, fp, fq);
+                    if best.is_none_or(|b| K::cmp_dist2(d, b) == Ordering::Less) {
+                        best = Some(d);
+                    }
+                }
+            }
+        }
+        best.expect("a pass has a subproblem")
     }
 
     /// The checks of one pass: (i)–(iv), the greedy's interval belief, cuts, monotone subchains,
@@ -2528,7 +2644,8 @@ mod tests {
     /// `split` on its own, for one seed: two disjoint sub-chains of an interlocked pair and a line
     /// through a vertex of their brute-force closest pair, in a random lattice direction, so that
     /// the chains cross the line anywhere but the closest pair is in opposite closed half-planes
-    /// (the condition Lemma 1 guarantees): the jobs' best candidate is `σ` exactly, under `K`.
+    /// and meets the separator (here the vertex alone; the conditions Lemma 1 guarantees): the
+    /// jobs' best candidate is `σ` exactly, under `K`.
     /// `None` when the seed draws no pair; else whether `split` split (`Some(None)`: it declined)
     /// into several runs.
     fn check_split<K: Kernel>(seed: u64) -> Option<Option<bool>> {
@@ -2554,8 +2671,23 @@ mod tests {
         let Some(jobs) = split::<K>(&pc, &qc, anchor, anchor + dir) else {
             return Some(None);
         };
-        let found = execute::<K>(&pc, &qc, anchor, anchor + dir, &jobs, f64::INFINITY, &mut 0)
-            .expect("section 3 accepts every part split hands it");
+        // The closest pair meets the line at `anchor`: a separator `l_i = {anchor}` on it.
+        let near = Near {
+            a: anchor,
+            c: anchor + dir,
+            before: [anchor; 2],
+            after: [anchor; 2],
+        };
+        let found = execute::<K>(
+            &pc,
+            &qc,
+            (near.a, near.c),
+            || near,
+            &jobs,
+            f64::INFINITY,
+            &mut 0,
+        )
+        .expect("section 3 accepts every part split hands it");
         let best = found
             .iter()
             .map(|(fp, fq, _)| dist_of(&pc, &qc, *fp, *fq))

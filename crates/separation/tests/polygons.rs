@@ -1,12 +1,14 @@
 //! Whole simple polygons: the intersection check, the disjoint-hull fast path of `separation`, and
 //! point/segment–polygon distances, against the brute-force twins and the exact oracle.
 
+use core::cmp::Ordering;
+
 use glam::DVec2;
 use polydist_oracle::{
     Contact, SplitMix64, boundary_distance, chain_distance, comb, contact_status_convex,
     contact_status_simple, spiral, star, two_opt, ulps_error_sqrt,
 };
-use polydist_polygon::predicates::{Exact, Fast, Kernel, Robust};
+use polydist_polygon::predicates::{Dist2, Exact, Fast, Kernel, Robust};
 use polydist_polygon::{Feature, Location, SimplePolygon};
 use polydist_separation::{
     Chain, Intersection, PolygonSeparation, Route, SeparationError, intersection, point_to_polygon,
@@ -688,6 +690,74 @@ fn interlocked_combs_go_through_the_separator() {
         let pair = polydist_oracle::interleaved_combs_ulps(9, 4, ulps);
         check_pair::<Robust>(&pair.a, &pair.b).unwrap();
     }
+}
+
+/// Two random stars of 400 vertices (a spike every fourth) pushed into each other: their
+/// separators' lines pass through many spikes, so some subproblems cross their line too often for
+/// `split` and are scanned whole, last, pruned by the best answer and by their distance to the
+/// separator. `σ` and its features agree exactly with the brute force, under Robust and Exact.
+#[test]
+fn interlocked_stars_scanned_near_their_separators() {
+    let (mut cases, mut large) = (0, 0);
+    for seed in 0..12u64 {
+        let mut rng = SplitMix64::new(seed);
+        let p = star(&mut rng, 400, 100);
+        let q0 = star(&mut rng, 400, 100);
+        let radius = |v: &[DVec2]| v.iter().map(|x| x.length()).fold(0.0, f64::max);
+        let sp = SimplePolygon::try_new(&p).unwrap();
+        for _ in 0..32 {
+            let t = 0.3 + 0.6 * rng.unit_f64();
+            let ang = core::f64::consts::TAU * rng.unit_f64();
+            let d = DVec2::new(ang.cos(), ang.sin()) * (radius(&p) + radius(&q0)) * t;
+            let q: Vec<DVec2> = q0.iter().map(|&v| v + d).collect();
+            let sq = SimplePolygon::try_new(&q).unwrap();
+            let Ok(PolygonSeparation::Separated {
+                pair,
+                route: Route::Separators,
+                stats,
+            }) = separation::<Robust>(&sp, &sq)
+            else {
+                continue;
+            };
+            cases += 1;
+            large += stats.subproblems_scanned_large;
+            let Ok(PolygonSeparation::Separated { pair: brute, .. }) =
+                polygon_separation_brute::<Robust>(&sp, &sq)
+            else {
+                panic!("seed {seed}: the brute force says intersecting");
+            };
+            let dist = |fp: Feature, fq: Feature| match (fp, fq) {
+                (Feature::Vertex(i), Feature::Vertex(j)) => Dist2::PointPoint(p[i], q[j]),
+                (Feature::Vertex(i), Feature::Edge(j)) => {
+                    Dist2::PointSegment(p[i], q[j], q[(j + 1) % q.len()])
+                }
+                (Feature::Edge(i), Feature::Vertex(j)) => {
+                    Dist2::PointSegment(q[j], p[i], p[(i + 1) % p.len()])
+                }
+                _ => unreachable!("a closest pair has a vertex"),
+            };
+            let want = dist(brute.feature_p, brute.feature_q);
+            assert_eq!(
+                Robust::cmp_dist2(dist(pair.feature_p, pair.feature_q), want),
+                Ordering::Equal,
+                "seed {seed}"
+            );
+            let Ok(PolygonSeparation::Separated { pair, .. }) = separation::<Exact>(&sp, &sq)
+            else {
+                panic!("seed {seed}: Exact disagrees on the route");
+            };
+            assert_eq!(
+                Exact::cmp_dist2(dist(pair.feature_p, pair.feature_q), want),
+                Ordering::Equal,
+                "seed {seed}, Exact"
+            );
+            break;
+        }
+    }
+    assert!(
+        cases >= 6 && large >= 2,
+        "{cases} cases, {large} large scans"
+    );
 }
 
 /// Two shapes of the generator families pushed into each other: `Q` scaled by `2^−k` (exact), its
