@@ -19,6 +19,10 @@
 //!   131,072 vertices: its few large subproblems go to section 3 (`docs/algorithms/separator.md`);
 //! - `polygons/interlocked_spirals`: two spiral arms turned half a turn from each other, nested one
 //!   unit apart (clearance 1/2, up to six turns): the separator's long spiral corridor.
+//! - `polygons/interlocked_stars`: two random stars (a spike every fourth vertex) pushed into each
+//!   other until disjoint with meeting hulls; the lines of their separators pass through many
+//!   spikes, so some subproblems are scanned whole (the quadratic case, pruned by the best answer
+//!   and by their distance to the separator). Up to 131,072 vertices.
 //!
 //! - `polylines/toolpath`: an open polyline (the tooth profile of the mirrored saw-tooth slab, `N/2`
 //!   vertices, tips opposite notches `1/4` away) against the saw-tooth slab (`N/2` vertices):
@@ -53,7 +57,8 @@ use parry2d_f64::math::{Pose, Vector};
 use parry2d_f64::query;
 use parry2d_f64::shape::Polyline;
 use polydist_benches::{
-    interlocked_combs, interlocked_combs_jittered, interlocked_spirals, pocket, sawteeth,
+    interlocked_combs, interlocked_combs_jittered, interlocked_spirals, interlocked_stars, pocket,
+    sawteeth,
 };
 use polydist_oracle::SplitMix64;
 use polydist_polygon::SimplePolygon;
@@ -365,6 +370,13 @@ fn benches() {
         "polygons/interlocked_spirals",
         interlocked_spirals,
         usize::MAX,
+    );
+    // Random directions start to repeat in larger stars.
+    run(
+        &mut c,
+        "polygons/interlocked_stars",
+        interlocked_stars,
+        131_072,
     );
     // Up to 131,072: its subproblems go to section 3 since 2026-11-26 (docs/algorithms/separator.md);
     // a million vertices is timed by `examples/separation_profile` instead.

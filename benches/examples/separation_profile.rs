@@ -4,14 +4,16 @@
 //!
 //! `cargo run --release -p polydist-benches --example separation_profile -- <family> <N> <runs> <kernels>`
 //! with family `combs` (interlocked, every clearance tied), `jit` (the same, jittered), `pocket` (a
-//! star in a C's pocket, the containing case), `spir` (two interlocked spiral arms), `saw` (saw-teeth tip to notch, section 3), `dec` (the tied
+//! star in a C's pocket, the containing case), `spir` (two interlocked spiral arms), `istar` (two random stars
+//! pushed into each other), `saw` (saw-teeth tip to notch, section 3), `dec` (the tied
 //! combs scaled by 0.1: decimal coordinates, whose ties the error-free stage cannot settle), and kernels any of `r` (Robust), `f` (Fast) and `g` (geo's
 //! distance, once per run, for sizes its criterion series skips) (default `combs 131072 5 rf`).
 //! Figures only; the benchmarks are the reference.
 
 use glam::DVec2;
 use polydist_benches::{
-    interlocked_combs, interlocked_combs_jittered, interlocked_spirals, pocket, sawteeth,
+    interlocked_combs, interlocked_combs_jittered, interlocked_spirals, interlocked_stars, pocket,
+    sawteeth,
 };
 use polydist_polygon::SimplePolygon;
 use polydist_predicates::{Fast, Robust};
@@ -28,6 +30,7 @@ fn main() {
         "jit" => interlocked_combs_jittered(n),
         "pocket" => pocket(n),
         "spir" => interlocked_spirals(n),
+        "istar" => interlocked_stars(n),
         "saw" => sawteeth(n),
         "dec" => {
             let (a, b) = interlocked_combs(n);

@@ -5,7 +5,10 @@
 use std::f64::consts::TAU;
 
 use glam::DVec2;
-use polydist_oracle::SplitMix64;
+use polydist_oracle::{Contact, SplitMix64, contact_status_convex, star};
+use polydist_polygon::SimplePolygon;
+use polydist_polygon::predicates::Robust;
+use polydist_separation::intersection;
 
 /// Two combs with interleaved teeth (`polydist_oracle::interleaved_combs`), clearance 1/8.
 pub fn interlocked_combs(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
@@ -48,6 +51,37 @@ pub fn interlocked_spirals(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
     a.extend((0..m).rev().map(|k| at(theta(k), -0.25)));
     let b = a.iter().map(|&v| -v).collect();
     (a, b)
+}
+
+/// Two random stars (`polydist_oracle::star`: integer directions, every fourth vertex a spike 8 to
+/// 64 times farther out), `n/2` vertices each, the second moved until the two are disjoint while
+/// their hulls meet: spikes in each other's notches. The lines of their separators pass through
+/// many spikes, so some subproblems cross their line too often for `split` and are scanned whole
+/// (`docs/algorithms/separator.md`, the quadratic case). The first seed and placement (32 a seed:
+/// a random direction, the centres 30 to 90 % of the sum of the radii apart) that interlocks.
+/// Up to about 131,072 vertices (beyond, the stars' random directions start to repeat).
+pub fn interlocked_stars(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
+    let half = (n / 2).max(8);
+    let radius = |v: &[DVec2]| v.iter().map(|x| x.length()).fold(0.0, f64::max);
+    (0u64..)
+        .find_map(|seed| {
+            let mut rng = SplitMix64::new(seed);
+            let p = star(&mut rng, half, half / 4);
+            let q = star(&mut rng, half, half / 4);
+            let sp = SimplePolygon::try_new(&p).ok()?;
+            (0..32).find_map(|_| {
+                let t = 0.3 + 0.6 * rng.unit_f64();
+                let a = TAU * rng.unit_f64();
+                let d = DVec2::new(a.cos(), a.sin()) * (radius(&p) + radius(&q)) * t;
+                let q: Vec<DVec2> = q.iter().map(|&v| v + d).collect();
+                let sq = SimplePolygon::try_new(&q).ok()?;
+                let hulls = [sp.convex_hull(), sq.convex_hull()];
+                let meet = contact_status_convex(hulls[0].vertices(), hulls[1].vertices())
+                    != Contact::Disjoint;
+                (meet && intersection::<Robust>(&sp, &sq).is_none()).then(|| (p.clone(), q))
+            })
+        })
+        .expect("some placement interlocks")
 }
 
 /// A spiky star in the pocket of a "C" (see the module docs), `n` vertices in all.
