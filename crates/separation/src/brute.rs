@@ -1468,8 +1468,8 @@ mod tests {
                 let beyond = (t0.clone() - tx.clone())
                     .max(tx - t1.clone())
                     .max(zero_r.clone());
-                // Squared distance to the points of the line with `t0 ≤ t ≤ t1`, times `|d|²`
-                // squared away: (depth² + beyond²) / |d|².
+                // The squared distance to the points of the line with `t0 ≤ t ≤ t1`: `depth` and
+                // `beyond` are that distance's two legs scaled by `|d|`.
                 let exact = (depth.clone() * depth + beyond.clone() * beyond) / len.clone();
                 assert!(exact >= r(g), "{near:?} box {lo} {hi} at {x}: gap {g}");
             }
