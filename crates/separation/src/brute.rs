@@ -704,8 +704,8 @@ pub(crate) fn scan_pruned<K: Kernel>(p: &[DVec2], q: &[DVec2], interior_only: bo
 /// certainly farther apart than `√cut` (their candidates cannot beat `cut`). With `near`, the box
 /// nodes whose
 /// points are all certainly farther from `l_i` than the best candidate so far (or than `√cut`)
-/// are skipped as well: the winner is then the nearest pair with both points within its own
-/// distance of `l_i` when that beats `cut`, and some pair of the chains otherwise.
+/// are skipped as well: the winner is then no farther than every pair with both points within its
+/// own length of `l_i` that beats `cut`, and some pair of the chains otherwise.
 pub(crate) fn scan_pruned_winner_below<K: Kernel>(
     p: &[DVec2],
     q: &[DVec2],

@@ -1520,9 +1520,9 @@ fn trimmed(r: &Region, qlo: usize, qhi: usize) -> Option<(usize, usize)> {
 ///
 /// When large (the containing case's long subchains, subproblems that cross their line too often
 /// for [`split`]) the scan is pruned by bounding boxes, and also by the distance to `l_i`
-/// ([`Near`]): its winner is then the nearest pair the subproblem must find (Lemma 1 assigns it
-/// only pairs meeting `l_i`) when that beats the best so far. The plain scan leaves out the pairs of
-/// `seen` (which an earlier scan took).
+/// ([`Near`]): its winner is then no farther than every pair the subproblem must find (Lemma 1
+/// assigns it only pairs meeting `l_i`) that beats the best so far. The plain scan leaves out the
+/// pairs of `seen` (which an earlier scan took).
 fn scan_part<K: Kernel>(
     p: &[DVec2],
     q: &[DVec2],

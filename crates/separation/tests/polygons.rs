@@ -695,7 +695,8 @@ fn interlocked_combs_go_through_the_separator() {
 /// Two random stars of 400 vertices (a spike every fourth) pushed into each other: their
 /// separators' lines pass through many spikes, so some subproblems cross their line too often for
 /// `split` and are scanned whole, last, pruned by the best answer and by their distance to the
-/// separator. `σ` and its features agree exactly with the brute force, under Robust and Exact.
+/// separator. The reported features are exactly as near as the brute force's, under Robust and
+/// Exact.
 #[test]
 fn interlocked_stars_scanned_near_their_separators() {
     let (mut cases, mut large) = (0, 0);
@@ -744,7 +745,7 @@ fn interlocked_stars_scanned_near_their_separators() {
             );
             let Ok(PolygonSeparation::Separated { pair, .. }) = separation::<Exact>(&sp, &sq)
             else {
-                panic!("seed {seed}: Exact disagrees on the route");
+                panic!("seed {seed}: Exact finds the stars intersecting");
             };
             assert_eq!(
                 Exact::cmp_dist2(dist(pair.feature_p, pair.feature_q), want),
