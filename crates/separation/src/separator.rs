@@ -1420,7 +1420,9 @@ fn solve_pass<K: Kernel>(
                     )
                 })
             };
-            if found.is_none() && pcv.len() * qcv.len() > PRUNE_ABOVE {
+            // A scan of this part is pruned ([`scan_part`]'s test), and waits when deferring.
+            let large = pcv.len() * qcv.len() > PRUNE_ABOVE;
+            if found.is_none() && large {
                 if let Pick::Defer(later) = &mut pick {
                     later.push((i, part));
                     continue;
@@ -1436,8 +1438,7 @@ fn solve_pass<K: Kernel>(
                 }
                 None => {
                     stats.subproblems_scanned += 1;
-                    stats.subproblems_scanned_large +=
-                        usize::from(pcv.len() * qcv.len() > PRUNE_ABOVE);
+                    stats.subproblems_scanned_large += usize::from(large);
                     let seen = last_scanned.map_or(Seen::NONE, |(p0, p1, q0, q1)| Seen {
                         p: overlap(plo, phi, p0, p1),
                         q: overlap(qlo, qhi, q0, q1),
@@ -1447,8 +1448,7 @@ fn solve_pass<K: Kernel>(
                     fold(fp, fq, Err(w));
                     // A pruned scan leaves out pairs far from `l_i`, which a later subproblem may
                     // have to find: it counts as seeing nothing.
-                    last_scanned =
-                        (pcv.len() * qcv.len() <= PRUNE_ABOVE).then_some((plo, phi, qlo, qhi));
+                    last_scanned = (!large).then_some((plo, phi, qlo, qhi));
                 }
             }
         }
