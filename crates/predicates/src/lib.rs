@@ -36,6 +36,7 @@
 #![forbid(unsafe_code)]
 
 mod counting;
+mod crossing;
 mod dd;
 pub mod exact;
 mod expansion;
@@ -46,6 +47,7 @@ mod ring;
 mod sign;
 
 pub use counting::{Counted, PredicateCounts, predicate_counts, reset_predicate_counts};
+pub use crossing::{AtSites, CrossingLine, Site, sign_at};
 pub use dd::DoubleDouble;
 pub use expansion::Expansion;
 pub use kernel::{

@@ -1,0 +1,246 @@
+//! Signs at crossing points (`sign_at`) against exact rationals: every named predicate, with random
+//! sites (each one a crossing point or an input point) and with crossing points that land exactly on
+//! integer points, where ties and zeros are common.
+
+mod common;
+
+use common::{q, sgn};
+use glam::DVec2;
+use num_rational::BigRational;
+use num_traits::Signed;
+use polydist_predicates::{
+    Cross, CrossingLine, Dist4, Dot, Exact, Fast, Kernel, Nearer, Orient, PerpVsPerp, PointsVsPerp,
+    Polynomial, Ring, Robust, Sign, Site, sign_at,
+};
+use proptest::prelude::*;
+
+/// Rationals as a [`Ring`]: the reference arithmetic.
+#[derive(Clone)]
+struct Qr(BigRational);
+
+impl Ring for Qr {
+    fn input(x: f64) -> Self {
+        Qr(q(x))
+    }
+    fn add(&self, rhs: &Self) -> Self {
+        Qr(&self.0 + &rhs.0)
+    }
+    fn sub(&self, rhs: &Self) -> Self {
+        Qr(&self.0 - &rhs.0)
+    }
+    fn mul(&self, rhs: &Self) -> Self {
+        Qr(&self.0 * &rhs.0)
+    }
+    fn neg(&self) -> Self {
+        Qr(-&self.0)
+    }
+}
+
+/// `X(z) = (l1 − l0) × (z − l0)`, exactly.
+fn side(l0: DVec2, l1: DVec2, z: DVec2) -> BigRational {
+    (q(l1.x) - q(l0.x)) * (q(z.y) - q(l0.y)) - (q(l1.y) - q(l0.y)) * (q(z.x) - q(l0.x))
+}
+
+/// The site's exact coordinates (a crossing point from the rational formula).
+fn exact_site(l0: DVec2, l1: DVec2, s: Site) -> (BigRational, BigRational) {
+    match s {
+        Site::Input(p) => (q(p.x), q(p.y)),
+        Site::Crossing(a, b) => {
+            let (xa, xb) = (side(l0, l1, a), side(l0, l1, b));
+            let d = &xa - &xb;
+            (
+                (&xa * q(b.x) - &xb * q(a.x)) / &d,
+                (&xa * q(b.y) - &xb * q(a.y)) / &d,
+            )
+        }
+    }
+}
+
+/// The sign of `f` at the sites, in rationals.
+fn reference<F: Polynomial<N>, const N: usize, const M: usize>(
+    f: &F,
+    l0: DVec2,
+    l1: DVec2,
+    sites: [Site; M],
+) -> Sign {
+    let c: Vec<(BigRational, BigRational)> = sites.iter().map(|&s| exact_site(l0, l1, s)).collect();
+    let x: [Qr; N] = core::array::from_fn(|i| {
+        let (cx, cy) = &c[i / 2];
+        Qr(if i % 2 == 0 { cx.clone() } else { cy.clone() })
+    });
+    match sgn(&f.eval(&x).0) {
+        1 => Sign::Positive,
+        -1 => Sign::Negative,
+        _ => Sign::Zero,
+    }
+}
+
+/// `sign_at` under Robust and Exact against the reference; Fast only runs (it may be wrong).
+fn check<F: Polynomial<N>, const N: usize, const M: usize, const NI: usize>(
+    f: &F,
+    l0: DVec2,
+    l1: DVec2,
+    sites: [Site; M],
+) -> Sign {
+    let want = reference(f, l0, l1, sites);
+    assert_eq!(
+        sign_at::<Robust, F, N, M, NI>(f, l0, l1, sites),
+        want,
+        "Robust, {sites:?}"
+    );
+    assert_eq!(
+        sign_at::<Exact, F, N, M, NI>(f, l0, l1, sites),
+        want,
+        "Exact, {sites:?}"
+    );
+    let _ = sign_at::<Fast, F, N, M, NI>(f, l0, l1, sites);
+    want
+}
+
+/// All seven named predicates at the first sites of `s`; returns how many signs were zero.
+fn check_all(l0: DVec2, l1: DVec2, s: &[Site; 6]) -> usize {
+    let signs = [
+        check::<_, 6, 3, 16>(&Orient, l0, l1, [s[0], s[1], s[2]]),
+        check::<_, 8, 4, 20>(&Dot, l0, l1, [s[0], s[1], s[2], s[3]]),
+        check::<_, 8, 4, 20>(&Cross, l0, l1, [s[0], s[1], s[2], s[3]]),
+        check::<_, 6, 3, 16>(&Nearer, l0, l1, [s[0], s[1], s[2]]),
+        check::<_, 8, 4, 20>(&Dist4, l0, l1, [s[0], s[1], s[2], s[3]]),
+        check::<_, 10, 5, 24>(&PointsVsPerp, l0, l1, [s[0], s[1], s[2], s[3], s[4]]),
+        check::<_, 12, 6, 28>(&PerpVsPerp, l0, l1, *s),
+    ];
+    signs.iter().filter(|s| **s == Sign::Zero).count()
+}
+
+fn coord() -> impl Strategy<Value = f64> {
+    prop_oneof![
+        -1.0e3..1.0e3,
+        (-64i32..64).prop_map(f64::from),
+        (-1.0..1.0f64).prop_map(|x| 1.0e12 + x),
+    ]
+}
+
+fn point() -> impl Strategy<Value = DVec2> {
+    (coord(), coord()).prop_map(|(x, y)| DVec2::new(x, y))
+}
+
+/// A crossing point of `(a, b)` when `a`, `b` are strictly on opposite sides of the line, else `a`.
+fn site(l0: DVec2, l1: DVec2, a: DVec2, b: DVec2, crossing: bool) -> Site {
+    let (xa, xb) = (side(l0, l1, a), side(l0, l1, b));
+    if crossing && sgn(&xa) * sgn(&xb) < 0 {
+        Site::Crossing(a, b)
+    } else {
+        Site::Input(a)
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 400, ..ProptestConfig::default() })]
+
+    /// Random lines and sites: any mix of input and crossing points.
+    #[test]
+    fn random_sites_agree_with_rationals(
+        l0 in point(),
+        l1 in point(),
+        ends in proptest::array::uniform6((point(), point(), any::<bool>())),
+    ) {
+        prop_assume!(l0 != l1);
+        let sites = ends.map(|(a, b, c)| site(l0, l1, a, b, c));
+        check_all(l0, l1, &sites);
+    }
+
+    /// Crossing points that land exactly on integer points of an integer line, among small integer
+    /// input points, optionally scaled by a power of two or moved far from the origin: exact ties,
+    /// zeros, and several crossing points on the same line.
+    #[test]
+    fn integer_crossings_agree_with_rationals(
+        o in (-20i32..20, -20i32..20),
+        w in (-5i32..6, -5i32..6),
+        picks in proptest::array::uniform6((
+            -6i32..7,
+            (-5i32..6, -5i32..6),
+            (1i32..4, 1i32..4),
+            (-8i32..9, -8i32..9),
+            any::<bool>(),
+        )),
+        scale in prop_oneof![Just(0i32), Just(-30), Just(40)],
+        far in any::<bool>(),
+    ) {
+        prop_assume!(w != (0, 0));
+        let shift = if far { 1.0e12 } else { 0.0 };
+        let at = |x: i32, y: i32| {
+            DVec2::new(f64::from(x) + shift, f64::from(y) + shift) * 2f64.powi(scale)
+        };
+        let (l0, l1) = (at(o.0, o.1), at(o.0 + w.0, o.1 + w.1));
+        let sites = picks.map(|(t, v, (s1, s2), p, crossing)| {
+            // The crossing point c = o + t·w; a and b on the line through c with direction v.
+            let c = (o.0 + t * w.0, o.1 + t * w.1);
+            if crossing && v.0 * w.1 - v.1 * w.0 != 0 {
+                Site::Crossing(
+                    at(c.0 + s1 * v.0, c.1 + s1 * v.1),
+                    at(c.0 - s2 * v.0, c.1 - s2 * v.1),
+                )
+            } else if crossing {
+                Site::Input(at(c.0, c.1))
+            } else {
+                Site::Input(at(p.0, p.1))
+            }
+        });
+        check_all(l0, l1, &sites);
+        // Every crossing point is on the line: three sites of it are collinear.
+        let on: Vec<Site> = sites.iter().copied().filter(|s| s.is_crossing()).collect();
+        if on.len() >= 2 {
+            let third = Site::Input(l0);
+            let line = CrossingLine { l0, l1 };
+            prop_assert_eq!(line.orient::<Robust>(on[0], on[1], third).sign(), Sign::Zero);
+            prop_assert_eq!(line.orient::<Exact>(on[0], third, on[1]).sign(), Sign::Zero);
+        }
+    }
+}
+
+/// The integer family is degenerate enough to matter: across fixed seeds, a good share of its signs
+/// are exact zeros, which a sign read from rounded coordinates would get wrong.
+#[test]
+fn integer_crossings_produce_zeros() {
+    let (l0, l1) = (DVec2::new(0.0, 0.0), DVec2::new(3.0, 1.0));
+    // c = (3, 1) from (4, 3)–(1, −3) (direction (1, 2)); c = (−3, −1) from (−3, 1)–(−3, −2).
+    let c1 = Site::Crossing(DVec2::new(4.0, 3.0), DVec2::new(1.0, -3.0));
+    let c2 = Site::Crossing(DVec2::new(-3.0, 1.0), DVec2::new(-3.0, -2.0));
+    let sites = [
+        c1,
+        c2,
+        Site::Input(DVec2::new(0.0, 0.0)),
+        Site::Input(DVec2::new(6.0, 2.0)),
+        Site::Input(DVec2::new(3.0, 1.0)),
+        Site::Input(DVec2::new(-3.0, -1.0)),
+    ];
+    // Zeros: Orient(c1, c2, (0, 0)) (all on the line), Cross(c1, c2, (0, 0), (6, 2)) (parallel),
+    // Dist4(c1, c2, (0, 0), (6, 2)) (both 40), PerpVsPerp (both points on their lines).
+    let zeros = check_all(l0, l1, &sites);
+    assert_eq!(zeros, 4);
+    let line = CrossingLine { l0, l1 };
+    // c1 is exactly the input point (3, 1): every predicate agrees with it.
+    assert_eq!(
+        line.cmp_dist4::<Robust>(c1, sites[4], c2, sites[5]),
+        core::cmp::Ordering::Equal
+    );
+    assert_eq!(
+        line.orient::<Robust>(c1, sites[3], Site::Input(DVec2::new(7.0, 2.0))),
+        Robust::orient(
+            DVec2::new(3.0, 1.0),
+            DVec2::new(6.0, 2.0),
+            DVec2::new(7.0, 2.0)
+        )
+    );
+}
+
+/// The rounded position of a crossing point lies within a few ulps of the exact one.
+#[test]
+fn approx_is_close() {
+    let (l0, l1) = (DVec2::new(0.1, 0.2), DVec2::new(7.3, -1.9));
+    let s = Site::Crossing(DVec2::new(1.0, 5.0), DVec2::new(2.5, -3.0));
+    let c = s.approx(l0, l1);
+    let (ex, ey) = exact_site(l0, l1, s);
+    let err = (q(c.x) - ex).abs() + (q(c.y) - ey).abs();
+    assert!(err < q(1e-14), "{c:?}");
+    assert_eq!(Site::Input(DVec2::X).approx(l0, l1), DVec2::X);
+}
