@@ -32,6 +32,7 @@
 //! cannot do); two crossing points on the same line are collinear with every point on it.
 
 use core::array;
+use core::cmp::Ordering;
 
 use glam::DVec2;
 
@@ -40,33 +41,42 @@ use crate::{
     Ring, Sign, round_value,
 };
 
-/// A point a predicate is asked about: an input point, or the crossing of the segment `(a, b)` with
-/// the line the call names.
+/// A point a predicate is asked about: an input point, or the crossing of a segment with a line.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Site {
     /// An input point.
     Input(DVec2),
-    /// The point where the segment `(a, b)` crosses the line. The caller guarantees that `a` and `b`
-    /// lie strictly on opposite sides of it (decided exactly, for example by [`Kernel::orient`]);
-    /// otherwise the point is not defined and the signs are meaningless (never a panic).
-    Crossing(DVec2, DVec2),
+    /// The point where the segment `(a, b)` crosses the line through `l0` and `l1`. The caller
+    /// guarantees that `a` and `b` lie strictly on opposite sides of the line (decided exactly, for
+    /// example by [`Kernel::orient`]); otherwise the point is not defined and the signs are
+    /// meaningless (never a panic).
+    Crossing {
+        /// The segment's first end.
+        a: DVec2,
+        /// The segment's second end.
+        b: DVec2,
+        /// A point of the line.
+        l0: DVec2,
+        /// A second point of the line.
+        l1: DVec2,
+    },
 }
 
 impl Site {
     /// Whether this is a crossing point.
     #[must_use]
     pub fn is_crossing(self) -> bool {
-        matches!(self, Site::Crossing(..))
+        matches!(self, Site::Crossing { .. })
     }
 
     /// The point, rounded (for constructions and reports, never for decisions): an input point as it
     /// is, a crossing point as `a + t(b − a)` with `t = X(a)/(X(a) − X(b))` from correctly rounded
     /// `X(a)`, `X(b)`, clamped to the segment.
     #[must_use]
-    pub fn approx(self, l0: DVec2, l1: DVec2) -> DVec2 {
+    pub fn approx(self) -> DVec2 {
         match self {
             Site::Input(p) => p,
-            Site::Crossing(a, b) => {
+            Site::Crossing { a, b, l0, l1 } => {
                 let xa = round_value(&Orient, &[l0.x, l0.y, l1.x, l1.y, a.x, a.y]);
                 let xb = round_value(&Orient, &[l0.x, l0.y, l1.x, l1.y, b.x, b.y]);
                 let t = xa / (xa - xb);
@@ -153,9 +163,10 @@ impl<R: Ring, const M: usize> Ring for Cut<'_, R, M> {
 }
 
 /// The predicate `F` (`N = 2M` inputs: `M` points) at `M` sites, some of them crossing points, as a
-/// polynomial in `NI = 4 + 4M` inputs: the line `(l₀, l₁)`, then four per site (an input point's
-/// coordinates and two zeros, or the crossing segment's `a` and `b`). Its sign is the sign of `F` at
-/// the sites (module docs); build it with [`sign_at`].
+/// polynomial in `NI = 8M` inputs, eight per site: an input point's coordinates and six zeros, or a
+/// crossing point's `a`, `b`, `l0`, `l1`. Its sign is the sign of `F` at the sites (module docs);
+/// [`sign_at`] builds and decides it. For signs only: its declared degree is an upper bound, so
+/// [`round_value`] of it would scale by the wrong power.
 #[derive(Clone, Copy, Debug)]
 pub struct AtSites<'f, F: ?Sized, const N: usize, const M: usize> {
     f: &'f F,
@@ -173,16 +184,17 @@ where
     const DEGREE: u32 = F::DEGREE + 2 * (M as u32) * (F::DEGREE + 1);
 
     fn eval<R: Ring>(&self, x: &[R; NI]) -> R {
-        const { assert!(N == 2 * M && NI == 4 + 4 * M) };
-        let (l0x, l0y) = (&x[0], &x[1]);
-        let (dx, dy) = (x[2].sub(l0x), x[3].sub(l0y));
-        // X(z) = d × (z − l₀).
-        let side = |zx: &R, zy: &R| dx.mul(&zy.sub(l0y)).sub(&dy.mul(&zx.sub(l0x)));
+        const { assert!(N == 2 * M && NI == 8 * M) };
         let mut den: [R; M] = array::from_fn(|_| R::input(0.0));
-        let mut num: [(R, R); M] = array::from_fn(|k| (x[4 + 4 * k].clone(), x[5 + 4 * k].clone()));
+        let mut num: [(R, R); M] = array::from_fn(|k| (x[8 * k].clone(), x[8 * k + 1].clone()));
         for k in 0..M {
             if self.crossing[k] {
-                let (ax, ay, bx, by) = (&x[4 + 4 * k], &x[5 + 4 * k], &x[6 + 4 * k], &x[7 + 4 * k]);
+                let v = |i: usize| &x[8 * k + i];
+                let (ax, ay, bx, by) = (v(0), v(1), v(2), v(3));
+                let (l0x, l0y) = (v(4), v(5));
+                let (dx, dy) = (v(6).sub(l0x), v(7).sub(l0y));
+                // X(z) = d × (z − l₀).
+                let side = |zx: &R, zy: &R| dx.mul(&zy.sub(l0y)).sub(&dy.mul(&zx.sub(l0x)));
                 let (xa, xb) = (side(ax, ay), side(bx, by));
                 num[k] = (xa.mul(bx).sub(&xb.mul(ax)), xa.mul(by).sub(&xb.mul(ay)));
                 den[k] = xa.sub(&xb);
@@ -216,62 +228,50 @@ where
     }
 }
 
-/// The sign of the predicate `F` at `M` sites (its `N = 2M` inputs are their coordinates), crossing
-/// points taken on the line `(l0, l1)`; `NI = 4 + 4M` (checked at compile time). With no crossing
-/// point this is `K::sign(f, …)` on the coordinates. Exact under the Robust and Exact kernels.
+/// The sign of the predicate `F` at `M` sites (its `N = 2M` inputs are their coordinates in order);
+/// `NI = 8M` (checked at compile time). With no crossing point among the sites this is
+/// `K::sign(f, …)` on their coordinates. Exact under the Robust and Exact kernels.
 ///
 /// # Examples
 /// ```
 /// use glam::DVec2;
-/// use polydist_predicates::{Robust, Sign, Site, Orient, sign_at};
+/// use polydist_predicates::{Orient, Robust, Sign, Site, sign_at};
 ///
 /// // The segment (0, 1)–(1, −2) crosses the x-axis at (1/3, 0), which no f64 represents.
-/// let c = Site::Crossing(DVec2::new(0.0, 1.0), DVec2::new(1.0, -2.0));
 /// let (l0, l1) = (DVec2::ZERO, DVec2::X);
-/// // Two more points of the x-axis: exactly collinear.
-/// let s = sign_at::<Robust, _, 6, 3, 16>(&Orient, l0, l1, [c, Site::Input(DVec2::X), Site::Input(DVec2::NEG_X)]);
+/// let c = Site::Crossing { a: DVec2::new(0.0, 1.0), b: DVec2::new(1.0, -2.0), l0, l1 };
+/// // With two more points of the x-axis: exactly collinear.
+/// let s = sign_at::<Robust, _, 6, 3, 24>(&Orient, [c, Site::Input(DVec2::X), Site::Input(DVec2::NEG_X)]);
 /// assert_eq!(s, Sign::Zero);
 /// ```
 #[must_use]
 pub fn sign_at<K, F, const N: usize, const M: usize, const NI: usize>(
     f: &F,
-    l0: DVec2,
-    l1: DVec2,
     sites: [Site; M],
 ) -> Sign
 where
     K: Kernel,
     F: Polynomial<N> + ?Sized,
 {
-    const { assert!(N == 2 * M && NI == 4 + 4 * M) };
-    let point = |k: usize| match sites[k] {
-        Site::Input(p) => Some(p),
-        Site::Crossing(..) => None,
+    const { assert!(N == 2 * M && NI == 8 * M) };
+    let coordinate = |i: usize| match sites[i / 2] {
+        Site::Input(p) if i % 2 == 0 => p.x,
+        Site::Input(p) => p.y,
+        Site::Crossing { .. } => 0.0,
     };
     if sites.iter().all(|s| !s.is_crossing()) {
-        let x: [f64; N] = array::from_fn(|i| match point(i / 2) {
-            Some(p) if i % 2 == 0 => p.x,
-            Some(p) => p.y,
-            None => 0.0,
-        });
+        let x: [f64; N] = array::from_fn(coordinate);
         return K::sign(f, &x);
     }
-    let x: [f64; NI] = array::from_fn(|i| match i {
-        0 => l0.x,
-        1 => l0.y,
-        2 => l1.x,
-        3 => l1.y,
-        _ => {
-            let (k, j) = ((i - 4) / 4, (i - 4) % 4);
-            match (sites[k], j) {
-                (Site::Input(p), 0) => p.x,
-                (Site::Input(p), 1) => p.y,
-                (Site::Input(_), _) => 0.0,
-                (Site::Crossing(a, _), 0) => a.x,
-                (Site::Crossing(a, _), 1) => a.y,
-                (Site::Crossing(_, b), 2) => b.x,
-                (Site::Crossing(_, b), _) => b.y,
-            }
+    let x: [f64; NI] = array::from_fn(|i| {
+        let (k, j) = (i / 8, i % 8);
+        match sites[k] {
+            Site::Input(p) => match j {
+                0 => p.x,
+                1 => p.y,
+                _ => 0.0,
+            },
+            Site::Crossing { a, b, l0, l1 } => [a.x, a.y, b.x, b.y, l0.x, l0.y, l1.x, l1.y][j],
         }
     });
     let at = AtSites::<F, N, M> {
@@ -281,63 +281,46 @@ where
     K::sign(&at, &x)
 }
 
-/// The named predicates at sites, crossing points taken on the line `(l0, l1)`: the counterparts of
-/// [`Kernel`]'s methods, with the same meaning.
-#[derive(Clone, Copy, Debug)]
-pub struct CrossingLine {
-    /// A point of the line.
-    pub l0: DVec2,
-    /// A second point of the line.
-    pub l1: DVec2,
+/// [`Kernel::orient`] at sites.
+#[must_use]
+pub fn orient<K: Kernel>(a: Site, b: Site, c: Site) -> Orientation {
+    Orientation::from_sign(sign_at::<K, _, 6, 3, 24>(&Orient, [a, b, c]))
 }
 
-impl CrossingLine {
-    /// [`Kernel::orient`] at sites.
-    #[must_use]
-    pub fn orient<K: Kernel>(self, a: Site, b: Site, c: Site) -> Orientation {
-        Orientation::from_sign(sign_at::<K, _, 6, 3, 16>(
-            &Orient,
-            self.l0,
-            self.l1,
-            [a, b, c],
-        ))
-    }
+/// [`Kernel::dot_sign`] at sites.
+#[must_use]
+pub fn dot_sign<K: Kernel>(a: Site, b: Site, c: Site, d: Site) -> Sign {
+    sign_at::<K, _, 8, 4, 32>(&Dot, [a, b, c, d])
+}
 
-    /// [`Kernel::dot_sign`] at sites.
-    #[must_use]
-    pub fn dot_sign<K: Kernel>(self, a: Site, b: Site, c: Site, d: Site) -> Sign {
-        sign_at::<K, _, 8, 4, 20>(&Dot, self.l0, self.l1, [a, b, c, d])
-    }
+/// [`Kernel::cross_sign`] at sites.
+#[must_use]
+pub fn cross_sign<K: Kernel>(a: Site, b: Site, c: Site, d: Site) -> Sign {
+    sign_at::<K, _, 8, 4, 32>(&Cross, [a, b, c, d])
+}
 
-    /// [`Kernel::cross_sign`] at sites.
-    #[must_use]
-    pub fn cross_sign<K: Kernel>(self, a: Site, b: Site, c: Site, d: Site) -> Sign {
-        sign_at::<K, _, 8, 4, 20>(&Cross, self.l0, self.l1, [a, b, c, d])
-    }
+/// [`Kernel::cmp_dist`] at sites: `|p − a|²` against `|p − b|²`.
+#[must_use]
+pub fn cmp_dist<K: Kernel>(p: Site, a: Site, b: Site) -> Ordering {
+    sign_at::<K, _, 6, 3, 24>(&Nearer, [p, a, b]).to_ordering()
+}
 
-    /// [`Kernel::cmp_dist`] at sites: `|p − a|²` against `|p − b|²`.
-    #[must_use]
-    pub fn cmp_dist<K: Kernel>(self, p: Site, a: Site, b: Site) -> core::cmp::Ordering {
-        sign_at::<K, _, 6, 3, 16>(&Nearer, self.l0, self.l1, [p, a, b]).to_ordering()
-    }
+/// [`Kernel::cmp_dist4`] at sites: `|a − b|²` against `|c − d|²`.
+#[must_use]
+pub fn cmp_dist4<K: Kernel>(a: Site, b: Site, c: Site, d: Site) -> Ordering {
+    sign_at::<K, _, 8, 4, 32>(&Dist4, [a, b, c, d]).to_ordering()
+}
 
-    /// [`Kernel::cmp_dist4`] at sites: `|a − b|²` against `|c − d|²`.
-    #[must_use]
-    pub fn cmp_dist4<K: Kernel>(self, a: Site, b: Site, c: Site, d: Site) -> core::cmp::Ordering {
-        sign_at::<K, _, 8, 4, 20>(&Dist4, self.l0, self.l1, [a, b, c, d]).to_ordering()
-    }
+/// `|p − q|²` against the squared distance from `r` to the line `ab`: the sign of [`PointsVsPerp`]
+/// at sites.
+#[must_use]
+pub fn points_vs_perp<K: Kernel>(p: Site, q: Site, r: Site, a: Site, b: Site) -> Sign {
+    sign_at::<K, _, 10, 5, 40>(&PointsVsPerp, [p, q, r, a, b])
+}
 
-    /// `|p − q|²` against the squared distance from `r` to the line `ab` (the sign of
-    /// [`PointsVsPerp`]) at sites.
-    #[must_use]
-    pub fn points_vs_perp<K: Kernel>(self, p: Site, q: Site, r: Site, a: Site, b: Site) -> Sign {
-        sign_at::<K, _, 10, 5, 24>(&PointsVsPerp, self.l0, self.l1, [p, q, r, a, b])
-    }
-
-    /// The squared distance from `p` to the line `ab` against that from `q` to the line `cd` (the
-    /// sign of [`PerpVsPerp`]) at sites.
-    #[must_use]
-    pub fn perp_vs_perp<K: Kernel>(self, [p, a, b]: [Site; 3], [q, c, d]: [Site; 3]) -> Sign {
-        sign_at::<K, _, 12, 6, 28>(&PerpVsPerp, self.l0, self.l1, [p, a, b, q, c, d])
-    }
+/// The squared distance from `p` to the line `ab` against that from `q` to the line `cd`: the sign
+/// of [`PerpVsPerp`] at sites.
+#[must_use]
+pub fn perp_vs_perp<K: Kernel>([p, a, b]: [Site; 3], [q, c, d]: [Site; 3]) -> Sign {
+    sign_at::<K, _, 12, 6, 48>(&PerpVsPerp, [p, a, b, q, c, d])
 }

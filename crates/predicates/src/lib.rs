@@ -36,7 +36,7 @@
 #![forbid(unsafe_code)]
 
 mod counting;
-mod crossing;
+pub mod crossing;
 mod dd;
 pub mod exact;
 mod expansion;
@@ -47,7 +47,7 @@ mod ring;
 mod sign;
 
 pub use counting::{Counted, PredicateCounts, predicate_counts, reset_predicate_counts};
-pub use crossing::{AtSites, CrossingLine, Site, sign_at};
+pub use crossing::{AtSites, Site, sign_at};
 pub use dd::DoubleDouble;
 pub use expansion::Expansion;
 pub use kernel::{

@@ -9,8 +9,8 @@ use glam::DVec2;
 use num_rational::BigRational;
 use num_traits::Signed;
 use polydist_predicates::{
-    Cross, CrossingLine, Dist4, Dot, Exact, Fast, Kernel, Nearer, Orient, PerpVsPerp, PointsVsPerp,
-    Polynomial, Ring, Robust, Sign, Site, sign_at,
+    Cross, Dist4, Dot, Exact, Fast, Kernel, Nearer, Orient, PerpVsPerp, PointsVsPerp, Polynomial,
+    Ring, Robust, Sign, Site, crossing, sign_at,
 };
 use proptest::prelude::*;
 
@@ -42,10 +42,10 @@ fn side(l0: DVec2, l1: DVec2, z: DVec2) -> BigRational {
 }
 
 /// The site's exact coordinates (a crossing point from the rational formula).
-fn exact_site(l0: DVec2, l1: DVec2, s: Site) -> (BigRational, BigRational) {
+fn exact_site(s: Site) -> (BigRational, BigRational) {
     match s {
         Site::Input(p) => (q(p.x), q(p.y)),
-        Site::Crossing(a, b) => {
+        Site::Crossing { a, b, l0, l1 } => {
             let (xa, xb) = (side(l0, l1, a), side(l0, l1, b));
             let d = &xa - &xb;
             (
@@ -57,13 +57,8 @@ fn exact_site(l0: DVec2, l1: DVec2, s: Site) -> (BigRational, BigRational) {
 }
 
 /// The sign of `f` at the sites, in rationals.
-fn reference<F: Polynomial<N>, const N: usize, const M: usize>(
-    f: &F,
-    l0: DVec2,
-    l1: DVec2,
-    sites: [Site; M],
-) -> Sign {
-    let c: Vec<(BigRational, BigRational)> = sites.iter().map(|&s| exact_site(l0, l1, s)).collect();
+fn reference<F: Polynomial<N>, const N: usize, const M: usize>(f: &F, sites: [Site; M]) -> Sign {
+    let c: Vec<(BigRational, BigRational)> = sites.iter().map(|&s| exact_site(s)).collect();
     let x: [Qr; N] = core::array::from_fn(|i| {
         let (cx, cy) = &c[i / 2];
         Qr(if i % 2 == 0 { cx.clone() } else { cy.clone() })
@@ -78,35 +73,33 @@ fn reference<F: Polynomial<N>, const N: usize, const M: usize>(
 /// `sign_at` under Robust and Exact against the reference; Fast only runs (it may be wrong).
 fn check<F: Polynomial<N>, const N: usize, const M: usize, const NI: usize>(
     f: &F,
-    l0: DVec2,
-    l1: DVec2,
     sites: [Site; M],
 ) -> Sign {
-    let want = reference(f, l0, l1, sites);
+    let want = reference(f, sites);
     assert_eq!(
-        sign_at::<Robust, F, N, M, NI>(f, l0, l1, sites),
+        sign_at::<Robust, F, N, M, NI>(f, sites),
         want,
         "Robust, {sites:?}"
     );
     assert_eq!(
-        sign_at::<Exact, F, N, M, NI>(f, l0, l1, sites),
+        sign_at::<Exact, F, N, M, NI>(f, sites),
         want,
         "Exact, {sites:?}"
     );
-    let _ = sign_at::<Fast, F, N, M, NI>(f, l0, l1, sites);
+    let _ = sign_at::<Fast, F, N, M, NI>(f, sites);
     want
 }
 
 /// All seven named predicates at the first sites of `s`; returns how many signs were zero.
-fn check_all(l0: DVec2, l1: DVec2, s: &[Site; 6]) -> usize {
+fn check_all(s: &[Site; 6]) -> usize {
     let signs = [
-        check::<_, 6, 3, 16>(&Orient, l0, l1, [s[0], s[1], s[2]]),
-        check::<_, 8, 4, 20>(&Dot, l0, l1, [s[0], s[1], s[2], s[3]]),
-        check::<_, 8, 4, 20>(&Cross, l0, l1, [s[0], s[1], s[2], s[3]]),
-        check::<_, 6, 3, 16>(&Nearer, l0, l1, [s[0], s[1], s[2]]),
-        check::<_, 8, 4, 20>(&Dist4, l0, l1, [s[0], s[1], s[2], s[3]]),
-        check::<_, 10, 5, 24>(&PointsVsPerp, l0, l1, [s[0], s[1], s[2], s[3], s[4]]),
-        check::<_, 12, 6, 28>(&PerpVsPerp, l0, l1, *s),
+        check::<_, 6, 3, 24>(&Orient, [s[0], s[1], s[2]]),
+        check::<_, 8, 4, 32>(&Dot, [s[0], s[1], s[2], s[3]]),
+        check::<_, 8, 4, 32>(&Cross, [s[0], s[1], s[2], s[3]]),
+        check::<_, 6, 3, 24>(&Nearer, [s[0], s[1], s[2]]),
+        check::<_, 8, 4, 32>(&Dist4, [s[0], s[1], s[2], s[3]]),
+        check::<_, 10, 5, 40>(&PointsVsPerp, [s[0], s[1], s[2], s[3], s[4]]),
+        check::<_, 12, 6, 48>(&PerpVsPerp, *s),
     ];
     signs.iter().filter(|s| **s == Sign::Zero).count()
 }
@@ -127,7 +120,7 @@ fn point() -> impl Strategy<Value = DVec2> {
 fn site(l0: DVec2, l1: DVec2, a: DVec2, b: DVec2, crossing: bool) -> Site {
     let (xa, xb) = (side(l0, l1, a), side(l0, l1, b));
     if crossing && sgn(&xa) * sgn(&xb) < 0 {
-        Site::Crossing(a, b)
+        Site::Crossing { a, b, l0, l1 }
     } else {
         Site::Input(a)
     }
@@ -136,16 +129,25 @@ fn site(l0: DVec2, l1: DVec2, a: DVec2, b: DVec2, crossing: bool) -> Site {
 proptest! {
     #![proptest_config(ProptestConfig { cases: 400, ..ProptestConfig::default() })]
 
-    /// Random lines and sites: any mix of input and crossing points.
+    /// Random lines and sites: any mix of input and crossing points, the crossing points on one
+    /// line or each on its own.
     #[test]
     fn random_sites_agree_with_rationals(
         l0 in point(),
         l1 in point(),
-        ends in proptest::array::uniform6((point(), point(), any::<bool>())),
+        ends in proptest::array::uniform6((
+            point(),
+            point(),
+            any::<bool>(),
+            proptest::option::of((point(), point())),
+        )),
     ) {
         prop_assume!(l0 != l1);
-        let sites = ends.map(|(a, b, c)| site(l0, l1, a, b, c));
-        check_all(l0, l1, &sites);
+        let sites = ends.map(|(a, b, c, own)| match own {
+            Some((m0, m1)) if m0 != m1 => site(m0, m1, a, b, c),
+            _ => site(l0, l1, a, b, c),
+        });
+        check_all(&sites);
     }
 
     /// Crossing points that land exactly on integer points of an integer line, among small integer
@@ -175,24 +177,25 @@ proptest! {
             // The crossing point c = o + t·w; a and b on the line through c with direction v.
             let c = (o.0 + t * w.0, o.1 + t * w.1);
             if crossing && v.0 * w.1 - v.1 * w.0 != 0 {
-                Site::Crossing(
-                    at(c.0 + s1 * v.0, c.1 + s1 * v.1),
-                    at(c.0 - s2 * v.0, c.1 - s2 * v.1),
-                )
+                Site::Crossing {
+                    a: at(c.0 + s1 * v.0, c.1 + s1 * v.1),
+                    b: at(c.0 - s2 * v.0, c.1 - s2 * v.1),
+                    l0,
+                    l1,
+                }
             } else if crossing {
                 Site::Input(at(c.0, c.1))
             } else {
                 Site::Input(at(p.0, p.1))
             }
         });
-        check_all(l0, l1, &sites);
+        check_all(&sites);
         // Every crossing point is on the line: three sites of it are collinear.
         let on: Vec<Site> = sites.iter().copied().filter(|s| s.is_crossing()).collect();
         if on.len() >= 2 {
             let third = Site::Input(l0);
-            let line = CrossingLine { l0, l1 };
-            prop_assert_eq!(line.orient::<Robust>(on[0], on[1], third).sign(), Sign::Zero);
-            prop_assert_eq!(line.orient::<Exact>(on[0], third, on[1]).sign(), Sign::Zero);
+            prop_assert_eq!(crossing::orient::<Robust>(on[0], on[1], third).sign(), Sign::Zero);
+            prop_assert_eq!(crossing::orient::<Exact>(on[0], third, on[1]).sign(), Sign::Zero);
         }
     }
 }
@@ -203,8 +206,9 @@ proptest! {
 fn integer_crossings_produce_zeros() {
     let (l0, l1) = (DVec2::new(0.0, 0.0), DVec2::new(3.0, 1.0));
     // c = (3, 1) from (4, 3)–(1, −3) (direction (1, 2)); c = (−3, −1) from (−3, 1)–(−3, −2).
-    let c1 = Site::Crossing(DVec2::new(4.0, 3.0), DVec2::new(1.0, -3.0));
-    let c2 = Site::Crossing(DVec2::new(-3.0, 1.0), DVec2::new(-3.0, -2.0));
+    let crossing_of = |a, b| Site::Crossing { a, b, l0, l1 };
+    let c1 = crossing_of(DVec2::new(4.0, 3.0), DVec2::new(1.0, -3.0));
+    let c2 = crossing_of(DVec2::new(-3.0, 1.0), DVec2::new(-3.0, -2.0));
     let sites = [
         c1,
         c2,
@@ -215,16 +219,15 @@ fn integer_crossings_produce_zeros() {
     ];
     // Zeros: Orient(c1, c2, (0, 0)) (all on the line), Cross(c1, c2, (0, 0), (6, 2)) (parallel),
     // Dist4(c1, c2, (0, 0), (6, 2)) (both 40), PerpVsPerp (both points on their lines).
-    let zeros = check_all(l0, l1, &sites);
+    let zeros = check_all(&sites);
     assert_eq!(zeros, 4);
-    let line = CrossingLine { l0, l1 };
     // c1 is exactly the input point (3, 1): every predicate agrees with it.
     assert_eq!(
-        line.cmp_dist4::<Robust>(c1, sites[4], c2, sites[5]),
+        crossing::cmp_dist4::<Robust>(c1, sites[4], c2, sites[5]),
         core::cmp::Ordering::Equal
     );
     assert_eq!(
-        line.orient::<Robust>(c1, sites[3], Site::Input(DVec2::new(7.0, 2.0))),
+        crossing::orient::<Robust>(c1, sites[3], Site::Input(DVec2::new(7.0, 2.0))),
         Robust::orient(
             DVec2::new(3.0, 1.0),
             DVec2::new(6.0, 2.0),
@@ -237,10 +240,15 @@ fn integer_crossings_produce_zeros() {
 #[test]
 fn approx_is_close() {
     let (l0, l1) = (DVec2::new(0.1, 0.2), DVec2::new(7.3, -1.9));
-    let s = Site::Crossing(DVec2::new(1.0, 5.0), DVec2::new(2.5, -3.0));
-    let c = s.approx(l0, l1);
-    let (ex, ey) = exact_site(l0, l1, s);
+    let s = Site::Crossing {
+        a: DVec2::new(1.0, 5.0),
+        b: DVec2::new(2.5, -3.0),
+        l0,
+        l1,
+    };
+    let c = s.approx();
+    let (ex, ey) = exact_site(s);
     let err = (q(c.x) - ex).abs() + (q(c.y) - ey).abs();
     assert!(err < q(1e-14), "{c:?}");
-    assert_eq!(Site::Input(DVec2::X).approx(l0, l1), DVec2::X);
+    assert_eq!(Site::Input(DVec2::X).approx(), DVec2::X);
 }
