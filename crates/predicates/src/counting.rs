@@ -100,6 +100,7 @@ impl<K> Default for Counted<K> {
 impl<K: Kernel> Kernel for Counted<K> {
     const NAME: &'static str = K::NAME;
     const EXACT_DECISIONS: bool = K::EXACT_DECISIONS;
+    const FILTERED: bool = K::FILTERED;
     type Guide = Counted<K::Guide>;
 
     fn sign<const N: usize, P: Polynomial<N> + ?Sized>(p: &P, x: &[f64; N]) -> Sign {

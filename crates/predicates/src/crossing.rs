@@ -37,8 +37,8 @@ use core::cmp::Ordering;
 use glam::DVec2;
 
 use crate::{
-    Cross, Dist4, Dot, Kernel, Nearer, Orient, Orientation, PerpVsPerp, PointsVsPerp, Polynomial,
-    Ring, Sign, round_value,
+    Bounded, Cross, Dist2, Dist4, Dot, Kernel, Nearer, Orient, Orientation, PerpVsPerp,
+    PointsVsPerp, Polynomial, Ring, Sign, round_value,
 };
 
 /// A point a predicate is asked about: an input point, or the crossing of a segment with a line.
@@ -228,6 +228,28 @@ where
     }
 }
 
+/// A site's coordinates with rigorous error bounds: an input point exactly; a crossing point as
+/// `a + t(b − a)`, `t = X(a)/(X(a) − X(b))`, in [`Bounded`] arithmetic (`None` when the bound of
+/// `X(a) − X(b)` does not exclude zero).
+fn bounded_coordinates(s: Site) -> Option<(Bounded, Bounded)> {
+    match s {
+        Site::Input(p) => Some((Bounded::input(p.x), Bounded::input(p.y))),
+        Site::Crossing { a, b, l0, l1 } => {
+            let i = Bounded::input;
+            let (l0x, l0y) = (i(l0.x), i(l0.y));
+            let (dx, dy) = (i(l1.x).sub(&l0x), i(l1.y).sub(&l0y));
+            let side = |z: DVec2| dx.mul(&i(z.y).sub(&l0y)).sub(&dy.mul(&i(z.x).sub(&l0x)));
+            let (xa, xb) = (side(a), side(b));
+            let t = xa.div(&xa.sub(&xb))?;
+            let (ax, ay) = (i(a.x), i(a.y));
+            Some((
+                ax.add(&t.mul(&i(b.x).sub(&ax))),
+                ay.add(&t.mul(&i(b.y).sub(&ay))),
+            ))
+        }
+    }
+}
+
 /// The sign of the predicate `F` at `M` sites (its `N = 2M` inputs are their coordinates in order);
 /// `NI = 8M` (checked at compile time). With no crossing point among the sites this is
 /// `K::sign(f, …)` on their coordinates. Exact under the Robust and Exact kernels.
@@ -263,6 +285,28 @@ where
         let x: [f64; N] = array::from_fn(coordinate);
         return K::sign(f, &x);
     }
+    // The filter: the crossing points' coordinates with rigorous error bounds (one division
+    // each), then the predicate in the same arithmetic as the Robust kernel's own filter. Fast
+    // takes the rounded coordinates' sign as it is.
+    if !K::EXACT_DECISIONS || K::FILTERED {
+        let mut coords = [Bounded::input(0.0); N];
+        let mut ok = true;
+        for (k, s) in sites.iter().enumerate() {
+            match bounded_coordinates(*s) {
+                Some((x, y)) => {
+                    coords[2 * k] = x;
+                    coords[2 * k + 1] = y;
+                }
+                None => ok = false,
+            }
+        }
+        if !K::EXACT_DECISIONS {
+            return Sign::of_f64(f.eval(&coords.map(|c| c.value)));
+        }
+        if let Some(s) = ok.then(|| f.eval(&coords).certain_sign()).flatten() {
+            return s;
+        }
+    }
     let x: [f64; NI] = array::from_fn(|i| {
         let (k, j) = (i / 8, i % 8);
         match sites[k] {
@@ -281,22 +325,153 @@ where
     K::sign(&at, &x)
 }
 
+/// Whether `s` lies on the line through `l0`, `l1` by construction: a crossing point of that line
+/// (given by the same two points, in either order), or one of the two points. No arithmetic: a
+/// `false` only means "not known".
+fn on_line(s: Site, l0: DVec2, l1: DVec2) -> bool {
+    match s {
+        Site::Input(p) => p == l0 || p == l1,
+        Site::Crossing { l0: m0, l1: m1, .. } => (m0, m1) == (l0, l1) || (m0, m1) == (l1, l0),
+    }
+}
+
+/// The line of the first crossing point among `sites`.
+fn line_of(sites: &[Site]) -> Option<(DVec2, DVec2)> {
+    sites.iter().find_map(|s| match *s {
+        Site::Crossing { l0, l1, .. } => Some((l0, l1)),
+        Site::Input(_) => None,
+    })
+}
+
 /// [`Kernel::orient`] at sites.
+///
+/// Points known to lie on one line (crossing points of it, and the two points defining it) are
+/// decided structurally, where the exact value is zero or factors, so the filter is never asked to
+/// certify a zero: three of them are collinear; with two, `x` and `y`, and a third point `z`,
+/// `orient(x, y, z) = sign((y − x)·d) · orient(l0, l1, z)` (`y − x` is a multiple of `d = l1 − l0`,
+/// and `x` is on the line).
 #[must_use]
 pub fn orient<K: Kernel>(a: Site, b: Site, c: Site) -> Orientation {
-    Orientation::from_sign(sign_at::<K, _, 6, 3, 24>(&Orient, [a, b, c]))
+    if let Some((l0, l1)) = line_of(&[a, b, c]) {
+        let on = [a, b, c].map(|s| on_line(s, l0, l1));
+        // Rotate (a cyclic shift keeps the orientation) so that the points on the line come first.
+        let rotated = match on {
+            [true, true, true] => return Orientation::Collinear,
+            [true, true, false] => Some((a, b, c)),
+            [false, true, true] => Some((b, c, a)),
+            [true, false, true] => Some((c, a, b)),
+            _ => None,
+        };
+        if let Some((x, y, z)) = rotated {
+            let side = orient::<K>(Site::Input(l0), Site::Input(l1), z).sign();
+            return Orientation::from_sign(times(side, along::<K>(x, y, l0, l1)));
+        }
+    }
+    match (a, b, c) {
+        (Site::Input(a), Site::Input(b), Site::Input(c)) => K::orient(a, b, c),
+        _ => Orientation::from_sign(sign_at::<K, _, 6, 3, 24>(&Orient, [a, b, c])),
+    }
+}
+
+/// `s · t` for signs.
+fn times(s: Sign, t: Sign) -> Sign {
+    match t {
+        Sign::Positive => s,
+        Sign::Negative => s.reversed(),
+        Sign::Zero => Sign::Zero,
+    }
+}
+
+/// The sign of `(d − c)·(l1 − l0)` when `c`, `d` lie on the line (`d − c = t(l1 − l0)`: the sign of
+/// `t`), structurally when `(c, d)` is the line's own pair.
+fn along<K: Kernel>(c: Site, d: Site, l0: DVec2, l1: DVec2) -> Sign {
+    let (m0, m1) = (Site::Input(l0), Site::Input(l1));
+    if c == d {
+        Sign::Zero
+    } else if (c, d) == (m0, m1) {
+        Sign::Positive
+    } else if (c, d) == (m1, m0) {
+        Sign::Negative
+    } else {
+        dot_sign_plain::<K>(c, d, m0, m1)
+    }
 }
 
 /// [`Kernel::dot_sign`] at sites.
+///
+/// A pair of points known to lie on one line (as in [`orient`]) differs by a multiple of the line's
+/// direction: `(b − a)·(d − c) = t·(b − a)·(l1 − l0)` when `c`, `d` are on it, so the sign is
+/// `sign t` times a dot sign against the line's own two points (and likewise for `a`, `b`).
 #[must_use]
 pub fn dot_sign<K: Kernel>(a: Site, b: Site, c: Site, d: Site) -> Sign {
-    sign_at::<K, _, 8, 4, 32>(&Dot, [a, b, c, d])
+    if let Some((l0, l1)) = line_of(&[a, b, c, d]) {
+        let (m0, m1) = (Site::Input(l0), Site::Input(l1));
+        let on = [a, b, c, d].map(|s| on_line(s, l0, l1));
+        let own = |x: Site, y: Site| (x, y) == (m0, m1) || (x, y) == (m1, m0);
+        if on[2] && on[3] && !own(c, d) {
+            return times(dot_sign::<K>(a, b, m0, m1), along::<K>(c, d, l0, l1));
+        }
+        if on[0] && on[1] && !own(a, b) {
+            return times(dot_sign::<K>(m0, m1, c, d), along::<K>(a, b, l0, l1));
+        }
+    }
+    dot_sign_plain::<K>(a, b, c, d)
+}
+
+fn dot_sign_plain<K: Kernel>(a: Site, b: Site, c: Site, d: Site) -> Sign {
+    match (a, b, c, d) {
+        (Site::Input(a), Site::Input(b), Site::Input(c), Site::Input(d)) => K::dot_sign(a, b, c, d),
+        _ if a == b || c == d => Sign::Zero,
+        _ => sign_at::<K, _, 8, 4, 32>(&Dot, [a, b, c, d]),
+    }
 }
 
 /// [`Kernel::cross_sign`] at sites.
+///
+/// Points known to lie on one line (as in [`orient`]) are decided structurally: when `c`, `d` lie
+/// on it, `d − c = t(l1 − l0)`, so `(b − a) × (d − c) = t·(b − a) × (l1 − l0)`, and there a point of
+/// the line among `a`, `b` may stand for `l0` (its own cross product with the direction is zero);
+/// both on it give zero. The same with the roles of the two pairs exchanged. A depth across the
+/// line of a subproblem, the common case, thus becomes an orientation of input points. Every rule
+/// works with the one line chosen at the start, so the recursion is at most one level deep.
 #[must_use]
 pub fn cross_sign<K: Kernel>(a: Site, b: Site, c: Site, d: Site) -> Sign {
-    sign_at::<K, _, 8, 4, 32>(&Cross, [a, b, c, d])
+    if let Some((l0, l1)) = line_of(&[a, b, c, d]) {
+        let (m0, m1) = (Site::Input(l0), Site::Input(l1));
+        let on = [a, b, c, d].map(|s| on_line(s, l0, l1));
+        if on[2] && on[3] {
+            if (on[0] && on[1]) || c == d {
+                return Sign::Zero;
+            }
+            let a2 = if on[0] { m0 } else { a };
+            let b2 = if on[1] { m0 } else { b };
+            return times(
+                cross_sign_plain::<K>(a2, b2, m0, m1),
+                along::<K>(c, d, l0, l1),
+            );
+        }
+        if on[0] && on[1] {
+            // b − a = s(l1 − l0): (b − a) × (d − c) = s·(l1 − l0) × (d − c), where a point of the
+            // line among `c`, `d` may stand for `l0` (at most one is, after the case above).
+            let c2 = if on[2] { m0 } else { c };
+            let d2 = if on[3] { m0 } else { d };
+            return times(
+                cross_sign_plain::<K>(m0, m1, c2, d2),
+                along::<K>(a, b, l0, l1),
+            );
+        }
+    }
+    cross_sign_plain::<K>(a, b, c, d)
+}
+
+fn cross_sign_plain<K: Kernel>(a: Site, b: Site, c: Site, d: Site) -> Sign {
+    match (a, b, c, d) {
+        (Site::Input(a), Site::Input(b), Site::Input(c), Site::Input(d)) => {
+            K::cross_sign(a, b, c, d)
+        }
+        _ if a == b || c == d => Sign::Zero,
+        _ => sign_at::<K, _, 8, 4, 32>(&Cross, [a, b, c, d]),
+    }
 }
 
 /// [`Kernel::cmp_dist`] at sites: `|p − a|²` against `|p − b|²`.
@@ -323,4 +498,52 @@ pub fn points_vs_perp<K: Kernel>(p: Site, q: Site, r: Site, a: Site, b: Site) ->
 #[must_use]
 pub fn perp_vs_perp<K: Kernel>([p, a, b]: [Site; 3], [q, c, d]: [Site; 3]) -> Sign {
     sign_at::<K, _, 12, 6, 48>(&PerpVsPerp, [p, a, b, q, c, d])
+}
+
+/// A squared distance resolved to the polynomial that measures it.
+#[derive(Clone, Copy)]
+enum Measured {
+    /// `|p − q|²`.
+    Points(Site, Site),
+    /// The squared distance from `p` to the line `ab`, the foot strictly inside `[a, b]`.
+    Perp(Site, Site, Site),
+}
+
+fn measured<K: Kernel>(d: Dist2<Site>) -> Measured {
+    match d {
+        Dist2::PointPoint(p, q) => Measured::Points(p, q),
+        // `a == b` is taken as the point `a`, as by the kernel: two different sites may be one point,
+        // so equality is decided exactly (|a − b|² against 0).
+        Dist2::PointLine(p, a, b) if a == b || cmp_dist4::<K>(a, b, a, a) == Ordering::Equal => {
+            Measured::Points(p, a)
+        }
+        Dist2::PointLine(p, a, b) => Measured::Perp(p, a, b),
+        Dist2::PointSegment(p, a, b) => {
+            if dot_sign::<K>(a, p, a, b) != Sign::Positive {
+                Measured::Points(p, a)
+            } else if dot_sign::<K>(b, p, b, a) != Sign::Positive {
+                Measured::Points(p, b)
+            } else {
+                Measured::Perp(p, a, b)
+            }
+        }
+    }
+}
+
+/// [`Kernel::cmp_dist2`] at sites: the two squared distances compared exactly (the same
+/// polynomials, degree up to 6 before the crossing points are substituted).
+#[must_use]
+pub fn cmp_dist2<K: Kernel>(x: Dist2<Site>, y: Dist2<Site>) -> Ordering {
+    match (measured::<K>(x), measured::<K>(y)) {
+        (Measured::Points(p, q), Measured::Points(r, s)) => cmp_dist4::<K>(p, q, r, s),
+        (Measured::Points(p, q), Measured::Perp(r, a, b)) => {
+            points_vs_perp::<K>(p, q, r, a, b).to_ordering()
+        }
+        (Measured::Perp(r, a, b), Measured::Points(p, q)) => {
+            points_vs_perp::<K>(p, q, r, a, b).to_ordering().reverse()
+        }
+        (Measured::Perp(p, a, b), Measured::Perp(q, c, d)) => {
+            perp_vs_perp::<K>([p, a, b], [q, c, d]).to_ordering()
+        }
+    }
 }

@@ -27,6 +27,10 @@ pub trait Kernel: Copy + Default + Debug + Send + Sync + 'static {
     const NAME: &'static str;
     /// `true` when every decision is exact (Robust and Exact).
     const EXACT_DECISIONS: bool;
+    /// `true` when an exact decision may be certified by a floating-point filter with a proved
+    /// error bound before exact arithmetic (Robust); `false` for the reference kernel, which
+    /// always computes exactly (Exact), and for Fast, which never certifies.
+    const FILTERED: bool = false;
 
     /// The kernel that may *guide* a search whose result this kernel then certifies: an algorithm may
     /// run a search under `Guide` to propose a candidate and accept it only after a certificate
@@ -79,16 +83,19 @@ pub trait Kernel: Copy + Default + Debug + Send + Sync + 'static {
 
 /// A squared distance between a point and a point or a closed segment, for [`Kernel::cmp_dist2`].
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Dist2 {
+///
+/// The points are [`DVec2`]s for [`Kernel::cmp_dist2`]; [`crate::crossing::cmp_dist2`] takes
+/// [`Site`](crate::Site)s.
+pub enum Dist2<P = DVec2> {
     /// `|p − q|²`.
-    PointPoint(DVec2, DVec2),
+    PointPoint(P, P),
     /// The squared distance from `p` to the closed segment `[a, b]` (`a == b` allowed).
-    PointSegment(DVec2, DVec2, DVec2),
+    PointSegment(P, P, P),
     /// The squared distance from `p` to the *line* through `a` and `b`. It equals the segment's when
     /// the foot of `p` is strictly inside `[a, b]`: a caller that has established that (a scan that
     /// admits only such vertex–edge pairs) saves the two dot signs that locate the foot, on every
     /// comparison. `a == b` is taken as the point `a`.
-    PointLine(DVec2, DVec2, DVec2),
+    PointLine(P, P, P),
 }
 
 /// A squared distance resolved to its polynomial form.
@@ -353,6 +360,7 @@ fn filter_squares(s12: f64, s34: f64) -> Option<Sign> {
 
 impl Kernel for Robust {
     const NAME: &'static str = "robust";
+    const FILTERED: bool = true;
     type Guide = Fast;
     const EXACT_DECISIONS: bool = true;
 
