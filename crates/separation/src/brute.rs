@@ -663,6 +663,12 @@ fn boxes(c: &[DVec2]) -> Vec<BoxNode> {
 /// The squared distance between two boxes as an exact [`Dist2`]: a point pair whose coordinates
 /// are box coordinates (no arithmetic), so the kernel compares it exactly.
 fn box_gap(a: &BoxNode, b: &BoxNode) -> Dist2 {
+    corner_gap((a.lo, a.hi), (b.lo, b.hi))
+}
+
+/// [`box_gap`] of two boxes given by their corners `(lo, hi)`.
+fn corner_gap(a: (DVec2, DVec2), b: (DVec2, DVec2)) -> Dist2 {
+    let ((alo, ahi), (blo, bhi)) = (a, b);
     let axis = |alo: f64, ahi: f64, blo: f64, bhi: f64| {
         if ahi < blo {
             (ahi, blo)
@@ -672,9 +678,16 @@ fn box_gap(a: &BoxNode, b: &BoxNode) -> Dist2 {
             (0.0, 0.0)
         }
     };
-    let (xa, xb) = axis(a.lo.x, a.hi.x, b.lo.x, b.hi.x);
-    let (ya, yb) = axis(a.lo.y, a.hi.y, b.lo.y, b.hi.y);
+    let (xa, xb) = axis(alo.x, ahi.x, blo.x, bhi.x);
+    let (ya, yb) = axis(alo.y, ahi.y, blo.y, bhi.y);
     Dist2::PointPoint(DVec2::new(xa, ya), DVec2::new(xb, yb))
+}
+
+/// Whether every point of the box with corners `a = (lo, hi)` is certainly farther than `√cut`
+/// from every point of the box `b` (the filter's lower bound of the squared gap exceeds `cut`; no
+/// arithmetic on the corners, [`box_gap`]). `false` for an infinite `cut`.
+pub(crate) fn boxes_farther_than(a: (DVec2, DVec2), b: (DVec2, DVec2), cut: f64) -> bool {
+    gap_beyond(corner_gap(a, b), cut)
 }
 
 /// Whether the squared length of a [`box_gap`] is certainly greater than `cut` ([`bounds`]' lower

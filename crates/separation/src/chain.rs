@@ -15,33 +15,34 @@ use crate::param::Param;
 /// lower visible vertex's height (it is that vertex, or a vertex hidden behind it), else the shadow
 /// point `H(x) = H(v_k)` (a root, kept symbolic); `hi` likewise with `End`.
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct EnvEdge {
-    pub(crate) a: DVec2,
-    pub(crate) b: DVec2,
+pub(crate) struct EnvEdge<V = DVec2> {
+    pub(crate) a: V,
+    pub(crate) b: V,
     /// The caller's indices of `a` and `b`.
     pub(crate) ia: usize,
     pub(crate) ib: usize,
     /// The caller's edge index.
     pub(crate) caller: usize,
-    pub(crate) lo: Param,
-    pub(crate) hi: Param,
+    pub(crate) lo: Param<V>,
+    pub(crate) hi: Param<V>,
 }
 
 /// A chain after Lemma 2: the perpendicularly visible vertices, strictly increasing in height, with
 /// their caller indices, and the envelope edge between each two consecutive ones.
 #[derive(Clone, Debug, Default)]
-pub(crate) struct Prepared {
-    pub(crate) pts: Vec<DVec2>,
+pub(crate) struct Prepared<V = DVec2> {
+    pub(crate) pts: Vec<V>,
     pub(crate) idx: Vec<usize>,
-    /// `edges[k]` carries the envelope between `pts[k]` and `pts[k + 1]`.
-    pub(crate) edges: Vec<EnvEdge>,
+    /// `edges[k]` carries the envelope between `pts[k]` and `pts[k + 1]`; `None` where no point of
+    /// the chain lies between their heights (a gap between the runs of a clipped chain: never for a
+    /// connected chain).
+    pub(crate) edges: Vec<Option<EnvEdge<V>>>,
 }
 
-impl Prepared {
+impl<V: Copy> Prepared<V> {
     /// The real edge between heights `k` and `k + 1`: `(a, b, caller index of a, of b)`.
-    pub(crate) fn edge(&self, k: usize) -> (DVec2, DVec2, usize, usize) {
-        let e = &self.edges[k];
-        (e.a, e.b, e.ia, e.ib)
+    pub(crate) fn edge(&self, k: usize) -> Option<(V, V, usize, usize)> {
+        self.edges[k].as_ref().map(|e| (e.a, e.b, e.ia, e.ib))
     }
 
     /// A chain strictly increasing in height given as is (every vertex visible, each edge wholly
@@ -54,14 +55,16 @@ impl Prepared {
             edges: pts
                 .windows(2)
                 .enumerate()
-                .map(|(k, w)| EnvEdge {
-                    a: w[0],
-                    b: w[1],
-                    ia: k,
-                    ib: k + 1,
-                    caller: k,
-                    lo: Param::Start,
-                    hi: Param::End,
+                .map(|(k, w)| {
+                    Some(EnvEdge {
+                        a: w[0],
+                        b: w[1],
+                        ia: k,
+                        ib: k + 1,
+                        caller: k,
+                        lo: Param::Start,
+                        hi: Param::End,
+                    })
                 })
                 .collect(),
         }
@@ -185,7 +188,7 @@ pub(crate) fn validate_touching<K: Kernel>(
         (Chain::Q, q, frames.q, &mut on_line.q),
     ] {
         for (index, &v) in pts.iter().enumerate() {
-            match frame.depth_sign::<K>(v) {
+            match frame.depth_sign::<K, _>(v) {
                 Sign::Negative => return Err(SeparationError::NotSeparated { chain, index }),
                 Sign::Zero => on.push(index),
                 Sign::Positive => {}
@@ -210,7 +213,7 @@ pub(crate) fn check_monotone<K: Kernel>(
     let n = chain.len();
     // The direction of the chain: the first strict height change.
     let rising = (1..n)
-        .map(|i| frame.cmp_height::<K>(chain[i], chain[i - 1]))
+        .map(|i| frame.cmp_height::<K, _>(chain[i], chain[i - 1]))
         .find(|o| o.is_ne())
         .is_none_or(|o| o.is_gt());
     let bad = |index| {
@@ -227,7 +230,7 @@ pub(crate) fn check_monotone<K: Kernel>(
         if v == chain[prev] {
             continue; // a repeated vertex (zero-length edge): nothing new
         }
-        let mut o = frame.cmp_height::<K>(v, chain[prev]);
+        let mut o = frame.cmp_height::<K, _>(v, chain[prev]);
         if !rising {
             o = o.reverse();
         }
@@ -236,7 +239,7 @@ pub(crate) fn check_monotone<K: Kernel>(
             Ordering::Greater => run_dir = None,
             Ordering::Equal => {
                 // Equal height and distinct points: the depths differ (the frame is a similarity).
-                let dir = frame.cmp_depth::<K>(v, chain[prev]);
+                let dir = frame.cmp_depth::<K, _>(v, chain[prev]);
                 if run_dir.is_some_and(|d| d != dir) {
                     return bad(i);
                 }

@@ -39,7 +39,8 @@ use core::cmp::Ordering;
 use glam::DVec2;
 use polydist_predicates::{Dist2, Kernel, Polynomial, Ring, Sign};
 
-use crate::param::{Affine, Edge, Param, flat, op, pt, quad};
+use crate::param::{Affine, Edge, Param, op, pt, quad};
+use crate::site::Vertex;
 
 type P2<'a, R> = (&'a R, &'a R);
 
@@ -207,13 +208,13 @@ impl<const DEG: u32> Polynomial<18> for ArcVs<DEG> {
 }
 
 /// `sign(U + V√Δ)` for [`ArcVs`] with the part degrees `DU`, `DV`, `DW`.
-fn arc_sign<K: Kernel, const DU: u32, const DV: u32, const DW: u32>(
+fn arc_sign<K: Kernel, V: Vertex, const DU: u32, const DV: u32, const DW: u32>(
     hi: bool,
     other: Other,
-    x: &[f64; 18],
+    x: [V; 9],
     disc: impl FnOnce() -> Sign,
 ) -> Sign {
-    let su = K::sign(
+    let su = V::sign::<K, _, 18, 9, 72>(
         &ArcVs::<DU> {
             hi,
             other,
@@ -221,7 +222,7 @@ fn arc_sign<K: Kernel, const DU: u32, const DV: u32, const DW: u32>(
         },
         x,
     );
-    let sv = K::sign(
+    let sv = V::sign::<K, _, 18, 9, 72>(
         &ArcVs::<DV> {
             hi,
             other,
@@ -240,7 +241,7 @@ fn arc_sign<K: Kernel, const DU: u32, const DV: u32, const DW: u32>(
         }
         _ if su == sv => su,
         _ => {
-            let sw = K::sign(
+            let sw = V::sign::<K, _, 18, 9, 72>(
                 &ArcVs::<DW> {
                     hi,
                     other,
@@ -261,40 +262,40 @@ fn arc_sign<K: Kernel, const DU: u32, const DV: u32, const DW: u32>(
 /// row piece of a CVE matrix entry; compared through
 /// [`compare_edge_entries`](crate::compare_edge_entries).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct EdgePart {
-    pub(crate) a: DVec2,
-    pub(crate) b: DVec2,
-    pub(crate) bot: Param,
-    pub(crate) top: Param,
+pub struct EdgePart<V = DVec2> {
+    pub(crate) a: V,
+    pub(crate) b: V,
+    pub(crate) bot: Param<V>,
+    pub(crate) top: Param<V>,
 }
 
 /// The point of a part nearest to a vertex, as what its squared distance is.
 #[derive(Clone, Copy, Debug, PartialEq)]
-enum Val {
+enum Val<V> {
     /// An input point (`a` or `b`).
-    Point(DVec2),
+    Point(V),
     /// The foot on the line `(a, b)`.
     Line,
     /// The root of the affine form.
-    Rat(Affine),
+    Rat(Affine<V>),
     /// The lower (`hi == false`) or upper root of `F` for `(h, l)`.
-    Arc { h: DVec2, l: DVec2, hi: bool },
+    Arc { h: V, l: V, hi: bool },
 }
 
-impl EdgePart {
+impl<V: Vertex> EdgePart<V> {
     /// The edge's start `a` (the part lies on `[a, b]`).
     #[must_use]
-    pub fn start(&self) -> DVec2 {
+    pub fn start(&self) -> V {
         self.a
     }
 
     /// The edge's end `b`.
     #[must_use]
-    pub fn end(&self) -> DVec2 {
+    pub fn end(&self) -> V {
         self.b
     }
 
-    fn edge(&self) -> Edge {
+    fn edge(&self) -> Edge<V> {
         Edge {
             a: self.a,
             b: self.b,
@@ -302,7 +303,7 @@ impl EdgePart {
     }
 
     /// What the part's nearest point to `q` is: at most two parameter orders.
-    fn nearest<K: Kernel>(&self, q: DVec2) -> Val {
+    fn nearest<K: Kernel>(&self, q: V) -> Val<V> {
         let e = self.edge();
         let foot = Param::Root(Affine {
             cross: false,
@@ -313,12 +314,12 @@ impl EdgePart {
         });
         // The foot against an edge end is one dot sign (the foot form's drop g(a) − g(b) = −|b − a|²
         // is negative, so `Edge::cmp` would spend a test on it).
-        let below = |t: &Param| match t {
-            Param::Start => K::dot_sign(self.a, q, self.a, self.b) == Sign::Negative,
+        let below = |t: &Param<V>| match t {
+            Param::Start => V::dot_sign::<K>(self.a, q, self.a, self.b) == Sign::Negative,
             _ => e.cmp::<K>(&foot, t) == Ordering::Less,
         };
-        let above = |t: &Param| match t {
-            Param::End => K::dot_sign(self.b, q, self.a, self.b) == Sign::Positive,
+        let above = |t: &Param<V>| match t {
+            Param::End => V::dot_sign::<K>(self.b, q, self.a, self.b) == Sign::Positive,
             _ => e.cmp::<K>(&foot, t) == Ordering::Greater,
         };
         let end = if below(&self.bot) {
@@ -337,7 +338,7 @@ impl EdgePart {
     }
 
     /// The exact order of `d(q1, part)` and `d(q2, part)`. `O(1)` signs of degree ≤ 16.
-    pub(crate) fn cmp_dist<K: Kernel>(&self, q1: DVec2, q2: DVec2) -> Ordering {
+    pub(crate) fn cmp_dist<K: Kernel>(&self, q1: V, q2: V) -> Ordering {
         if q1 == q2 {
             return Ordering::Equal;
         }
@@ -345,24 +346,24 @@ impl EdgePart {
         self.cmp_vals::<K>(q1, v1, q2, v2)
     }
 
-    fn cmp_vals<K: Kernel>(&self, q1: DVec2, v1: Val, q2: DVec2, v2: Val) -> Ordering {
+    fn cmp_vals<K: Kernel>(&self, q1: V, v1: Val<V>, q2: V, v2: Val<V>) -> Ordering {
         let (a, b) = (self.a, self.b);
         match (v1, v2) {
             (Val::Rat(g), Val::Point(p)) => {
-                let x = flat::<16>(&[q1, a, b, g.c, g.v0, g.v1, q2, p]);
-                K::sign(&RatVsPoints { cr: g.cross }, &x).to_ordering()
+                let x = [q1, a, b, g.c, g.v0, g.v1, q2, p];
+                V::sign::<K, _, 16, 8, 64>(&RatVsPoints { cr: g.cross }, x).to_ordering()
             }
             (Val::Rat(g), Val::Line) => {
-                let x = flat::<14>(&[q1, a, b, g.c, g.v0, g.v1, q2]);
-                K::sign(&RatVsLine { cr: g.cross }, &x).to_ordering()
+                let x = [q1, a, b, g.c, g.v0, g.v1, q2];
+                V::sign::<K, _, 14, 7, 56>(&RatVsLine { cr: g.cross }, x).to_ordering()
             }
             (Val::Rat(g), Val::Rat(f)) => {
-                let x = flat::<24>(&[q1, a, b, g.c, g.v0, g.v1, q2, a, b, f.c, f.v0, f.v1]);
-                K::sign(
+                let x = [q1, a, b, g.c, g.v0, g.v1, q2, a, b, f.c, f.v0, f.v1];
+                V::sign::<K, _, 24, 12, 96>(
                     &RatVsRat {
                         cr: [g.cross, f.cross],
                     },
-                    &x,
+                    x,
                 )
                 .to_ordering()
             }
@@ -374,11 +375,11 @@ impl EdgePart {
                     Val::Arc { hi: hi2, .. } => (Other::Arc(hi2), [q2; 4]),
                     Val::Rat(g) => (Other::Rat(g.cross), [q2, g.c, g.v0, g.v1]),
                 };
-                let x = flat::<18>(&[a, b, h, l, q1, rest[0], rest[1], rest[2], rest[3]]);
+                let x = [a, b, h, l, q1, rest[0], rest[1], rest[2], rest[3]];
                 let s = if let Other::Rat(_) = o {
-                    arc_sign::<K, 8, 6, 16>(hi, o, &x, disc)
+                    arc_sign::<K, V, 8, 6, 16>(hi, o, x, disc)
                 } else {
-                    arc_sign::<K, 4, 2, 8>(hi, o, &x, disc)
+                    arc_sign::<K, V, 4, 2, 8>(hi, o, x, disc)
                 };
                 s.to_ordering()
             }
@@ -389,7 +390,7 @@ impl EdgePart {
                     Val::Point(p) => Dist2::PointPoint(q, p),
                     _ => Dist2::PointLine(q, a, b),
                 };
-                K::cmp_dist2(input(q1, v1), input(q2, v2))
+                V::cmp_dist2::<K>(input(q1, v1), input(q2, v2))
             }
         }
     }
@@ -479,7 +480,7 @@ mod tests {
             ] {
                 assert_eq!(got, d1.total_cmp(&d2), "{part:?} {q1} {q2}");
             }
-            let kind = |v: Val| match v {
+            let kind = |v: Val<DVec2>| match v {
                 Val::Point(_) => 0,
                 Val::Line => 1,
                 Val::Rat(_) => 2,

@@ -17,6 +17,7 @@ use crate::error::{Chain, SeparationError};
 use crate::frame::Frame;
 use crate::param::{Affine, Edge, EdgePoint, Param};
 use crate::pieces::{Piece, pieces};
+use crate::site::Vertex;
 use crate::wedge::{Apex, apexes};
 
 /// An entry of the CVE matrix: like [`MatrixEntry`](crate::MatrixEntry), with the distance from
@@ -28,13 +29,13 @@ use crate::wedge::{Apex, apexes};
 /// true distance between the chains, never below σ, and at most the piece's distance, so it equals
 /// σ for the row whose piece realizes σ.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum EdgeEntry {
+pub enum EdgeEntry<V = DVec2> {
     /// `d(q, piece)`.
     Dist {
         /// The column vertex.
-        q: DVec2,
+        q: V,
         /// The row's piece.
-        piece: EdgePart,
+        piece: EdgePart<V>,
     },
     /// `B + n_q − j`, holding `n_q − j`.
     Penalty(usize),
@@ -46,14 +47,14 @@ pub enum EdgeEntry {
 /// distances to one piece by [`EdgePart`]'s exact comparison (signs of degree ≤ 16), distances to
 /// different pieces by `cmp_dist2` of the whole edges (degree ≤ 6); penalties by their integer.
 #[must_use]
-pub fn compare_edge_entries<K: Kernel>(x: &EdgeEntry, y: &EdgeEntry) -> Ordering {
+pub fn compare_edge_entries<K: Kernel, V: Vertex>(x: &EdgeEntry<V>, y: &EdgeEntry<V>) -> Ordering {
     use EdgeEntry::{Dist, Penalty};
     match (x, y) {
         (Dist { q: q1, piece: p1 }, Dist { q: q2, piece: p2 }) => {
             if p1 == p2 {
                 p1.cmp_dist::<K>(*q1, *q2)
             } else {
-                K::cmp_dist2(
+                V::cmp_dist2::<K>(
                     Dist2::PointSegment(*q1, p1.a, p1.b),
                     Dist2::PointSegment(*q2, p2.a, p2.b),
                 )
@@ -86,24 +87,28 @@ impl<T> Default for Band<T> {
 
 /// Where the upper cap of a pointer scan lies.
 #[derive(Clone, Copy, Debug)]
-enum Cap {
+enum Cap<V> {
     Open,
-    At(EdgePoint),
-    Height(DVec2),
+    At(EdgePoint<V>),
+    Height(V),
 }
 
 /// The CVE matrix for the edges of one chain (rows: pieces in height order) against the vertices
 /// of the other (columns: the vertices left after Lemmas 2–3, in height order).
 #[derive(Clone, Debug)]
-pub struct CveMatrix<K: Kernel> {
+pub struct CveMatrix<K: Kernel, V: Vertex = DVec2> {
     fp: Frame,
     fq: Frame,
-    /// The envelope edges of the row chain, between consecutive heights.
-    edges: Vec<EnvEdge>,
-    pieces: Vec<Piece>,
-    cols: Vec<Apex>,
-    piece_bands: Vec<Band<DVec2>>,
-    col_bands: Vec<Band<EdgePoint>>,
+    /// The envelope edges of the row chain in height order, the gaps of a clipped chain left out:
+    /// the pieces' `edge` indexes this list.
+    edges: Vec<EnvEdge<V>>,
+    /// Each edge's position among the envelope's intervals (`pos[k] + 1 == pos[k + 1]` unless a
+    /// gap lies between them).
+    pos: Vec<usize>,
+    pieces: Vec<Piece<V>>,
+    cols: Vec<Apex<V>>,
+    piece_bands: Vec<Band<V>>,
+    col_bands: Vec<Band<EdgePoint<V>>>,
     lookups: Cell<usize>,
     kernel: PhantomData<K>,
 }
@@ -119,24 +124,44 @@ impl<K: Kernel> CveMatrix<K> {
         let frames = validate_touching::<K>(p, q, a, b)?
             .frames
             .ok_or(SeparationError::BothChainsTouchLine)?;
-        let pp = prepare::<K>(p, frames.p, Chain::P)?;
-        let qq = prepare::<K>(q, frames.q, Chain::Q)?;
-        let cols = apexes::<K>(&qq, frames.q);
-        let ps = pieces::<K>(&pp, frames.p);
+        let pp = prepare::<K, _>(p, frames.p, Chain::P)?;
+        let qq = prepare::<K, _>(q, frames.q, Chain::Q)?;
+        let cols = apexes::<K, _>(&qq, frames.q);
+        let ps = pieces::<K, _>(&pp, frames.p);
         Ok(Self::build(frames.p, frames.q, pp.edges, ps, cols))
     }
+}
 
+impl<K: Kernel, V: Vertex> CveMatrix<K, V> {
     pub(crate) fn build(
         fp: Frame,
         fq: Frame,
-        edges: Vec<EnvEdge>,
-        pieces: Vec<Piece>,
-        cols: Vec<Apex>,
+        edges: Vec<Option<EnvEdge<V>>>,
+        mut pieces: Vec<Piece<V>>,
+        cols: Vec<Apex<V>>,
     ) -> Self {
+        // Pieces lie on edges only, never in a gap: renumbered to the edges without the gaps.
+        let mut slot = vec![usize::MAX; edges.len()];
+        let (mut dense, mut pos) = (
+            Vec::with_capacity(edges.len()),
+            Vec::with_capacity(edges.len()),
+        );
+        for (k, e) in edges.into_iter().enumerate() {
+            if let Some(e) = e {
+                slot[k] = dense.len();
+                dense.push(e);
+                pos.push(k);
+            }
+        }
+        pieces.retain_mut(|pc| {
+            pc.edge = slot.get(pc.edge).copied().unwrap_or(usize::MAX);
+            pc.edge != usize::MAX
+        });
         let mut m = CveMatrix {
             fp,
             fq,
-            edges,
+            edges: dense,
+            pos,
             pieces,
             cols,
             piece_bands: Vec::new(),
@@ -149,18 +174,19 @@ impl<K: Kernel> CveMatrix<K> {
         m
     }
 
-    /// The edge of row `i`, as the prepared vertex index of its lower end.
+    /// The edge of row `i`, as its index among the envelope's edges (the gaps of a clipped chain
+    /// left out).
     pub(crate) fn row_edge(&self, i: usize) -> usize {
         self.pieces[i].edge
     }
 
     /// The envelope edge `k` of the row chain (between its heights `k` and `k + 1`).
-    pub(crate) fn real_edge(&self, k: usize) -> &EnvEdge {
+    pub(crate) fn real_edge(&self, k: usize) -> &EnvEdge<V> {
         &self.edges[k]
     }
 
     /// The column apex `j`.
-    pub(crate) fn column(&self, j: usize) -> &Apex {
+    pub(crate) fn column(&self, j: usize) -> &Apex<V> {
         &self.cols[j]
     }
 
@@ -170,7 +196,7 @@ impl<K: Kernel> CveMatrix<K> {
         self.lookups.get()
     }
 
-    fn edge(&self, k: usize) -> Edge {
+    fn edge(&self, k: usize) -> Edge<V> {
         Edge {
             a: self.edges[k].a,
             b: self.edges[k].b,
@@ -178,21 +204,21 @@ impl<K: Kernel> CveMatrix<K> {
     }
 
     /// `sign(g)` at a point of this chain.
-    fn eval(&self, g: &Affine, x: &EdgePoint) -> Sign {
+    fn eval(&self, g: &Affine<V>, x: &EdgePoint<V>) -> Sign {
         self.edge(x.edge).eval_within::<K>(g, &x.param)
     }
 
     /// `H(x)` against `H(t)` for a point `x` of this chain and an input point `t`.
-    fn cmp_height_with(&self, x: &EdgePoint, t: DVec2) -> Ordering {
+    fn cmp_height_with(&self, x: &EdgePoint<V>, t: V) -> Ordering {
         self.eval(&self.fp.height_minus(t), x).to_ordering()
     }
 
-    fn is_end(&self, x: &EdgePoint, at_end: bool) -> bool {
+    fn is_end(&self, x: &EdgePoint<V>, at_end: bool) -> bool {
         self.edge(x.edge).is_end::<K>(&x.param, at_end)
     }
 
     /// `true` when `x` is the top (`at_top`) or bottom of its edge's part on the envelope.
-    fn at_range_end(&self, x: &EdgePoint, at_top: bool) -> bool {
+    fn at_range_end(&self, x: &EdgePoint<V>, at_top: bool) -> bool {
         let r = &self.edges[x.edge];
         let end = if at_top { r.hi } else { r.lo };
         self.edge(x.edge).cmp::<K>(&x.param, &end) == Ordering::Equal
@@ -202,11 +228,14 @@ impl<K: Kernel> CveMatrix<K> {
     /// (within their parts on the envelope); the top of one edge's part and the bottom of the next
     /// are at the same height (the same vertex, or a visible vertex and a point hidden behind it:
     /// a vertex at the end of a run perpendicular to the line, or a shadow point) and compare equal.
-    fn cmp_points(&self, x: &EdgePoint, y: &EdgePoint) -> Ordering {
+    fn cmp_points(&self, x: &EdgePoint<V>, y: &EdgePoint<V>) -> Ordering {
         match x.edge.cmp(&y.edge) {
             Ordering::Equal => self.edge(x.edge).cmp::<K>(&x.param, &y.param),
             Ordering::Less => {
-                if x.edge + 1 == y.edge && self.at_range_end(x, true) && self.at_range_end(y, false)
+                if x.edge + 1 == y.edge
+                    && self.pos[x.edge] + 1 == self.pos[y.edge]
+                    && self.at_range_end(x, true)
+                    && self.at_range_end(y, false)
                 {
                     Ordering::Equal
                 } else {
@@ -217,14 +246,14 @@ impl<K: Kernel> CveMatrix<K> {
         }
     }
 
-    fn bot(&self, pc: &Piece) -> EdgePoint {
+    fn bot(&self, pc: &Piece<V>) -> EdgePoint<V> {
         EdgePoint {
             edge: pc.edge,
             param: pc.bot,
         }
     }
 
-    fn top(&self, pc: &Piece) -> EdgePoint {
+    fn top(&self, pc: &Piece<V>) -> EdgePoint<V> {
         EdgePoint {
             edge: pc.edge,
             param: pc.top,
@@ -233,7 +262,7 @@ impl<K: Kernel> CveMatrix<K> {
 
     /// `u` is admissible for the piece: `u ∈ W(pc)` (open wedge with apexes at the piece's ends) and
     /// the piece's top (`up`) or bottom end lies in `W(u)`.
-    fn admissible_for_piece(&self, pc: &Piece, u: &Apex, up: bool) -> bool {
+    fn admissible_for_piece(&self, pc: &Piece<V>, u: &Apex<V>, up: bool) -> bool {
         let (fp, fq) = (self.fp, self.fq);
         let (top, bot) = (self.top(pc), self.bot(pc));
         let e = self.edge(pc.edge);
@@ -241,7 +270,7 @@ impl<K: Kernel> CveMatrix<K> {
         // tangent is that end), the ray runs along the edge.
         let below_upper = match pc.hi {
             Some(h) if h == e.b && self.is_end(&top, true) => {
-                fp.orient::<K>(e.a, e.b, u.pt) == Sign::Positive
+                fp.orient::<K, _>(e.a, e.b, u.pt) == Sign::Positive
             }
             Some(h) => self.eval(&fp.orient_x_first(h, u.pt), &top) == Sign::Positive,
             None => self.eval(&fp.depth_minus(u.pt), &top) == Sign::Positive,
@@ -251,7 +280,7 @@ impl<K: Kernel> CveMatrix<K> {
         }
         let above_lower = match pc.lo {
             Some(l) if l == e.a && self.is_end(&bot, false) => {
-                fp.orient::<K>(e.b, e.a, u.pt) == Sign::Negative
+                fp.orient::<K, _>(e.b, e.a, u.pt) == Sign::Negative
             }
             Some(l) => self.eval(&fp.orient_x_first(l, u.pt), &bot) == Sign::Negative,
             None => self.eval(&fp.depth_minus(u.pt), &bot) == Sign::Positive,
@@ -273,7 +302,7 @@ impl<K: Kernel> CveMatrix<K> {
 
     /// `R(e_i)` for every piece: `u_i^+` the highest column vertex with
     /// `H(v_i^+) ≤ H(u) ≤ H(u_{i+1}^+)`, admissible; `u_i^-` symmetrically. One pointer per scan.
-    fn piece_regions(&self) -> Vec<Band<DVec2>> {
+    fn piece_regions(&self) -> Vec<Band<V>> {
         let (ps, us) = (&self.pieces, &self.cols);
         let mut out = vec![Band::default(); ps.len()];
         let mut k = us.len();
@@ -330,12 +359,12 @@ impl<K: Kernel> CveMatrix<K> {
     /// same edge: only then can a cap on this edge lie beyond the piece.
     fn admissible_end(
         &self,
-        pc: &Piece,
-        q: &Apex,
-        cap: Cap,
+        pc: &Piece<V>,
+        q: &Apex<V>,
+        cap: Cap<V>,
         up: bool,
         further: bool,
-    ) -> Option<Param> {
+    ) -> Option<Param<V>> {
         let (fp, fq) = (self.fp, self.fq);
         let e = self.edge(pc.edge);
         let (mut lb, mut ub) = (pc.bot, pc.top);
@@ -343,7 +372,7 @@ impl<K: Kernel> CveMatrix<K> {
         // saw-teeth every rejection of a column's pointer scan is theirs), and a rejection stops at
         // the first condition negative at both ends.
         let hq = fp.height_minus(q.pt);
-        let mut conds: [Option<Affine>; 6] = [None; 6];
+        let mut conds: [Option<Affine<V>>; 6] = [None; 6];
         conds[0] = Some(match q.hi {
             Some(h) => fq.orient_x_last(q.pt, h),
             None => fq.depth_minus(q.pt).negated(),
@@ -456,7 +485,7 @@ impl<K: Kernel> CveMatrix<K> {
     /// `R(q_j)` for every column vertex: `u_j^+` the highest admissible point of the pieces between
     /// `H(q_j)` and `H(u_{j+1}^+)`, by one pointer over the pieces moving down (and one moving up
     /// for `u_j^-`); each column stops on at most one piece it does not pass.
-    fn column_regions(&self) -> Vec<Band<EdgePoint>> {
+    fn column_regions(&self) -> Vec<Band<EdgePoint<V>>> {
         let (ps, qs) = (&self.pieces, &self.cols);
         let mut out = vec![Band::default(); qs.len()];
         let mut k = ps.len();
@@ -525,8 +554,8 @@ impl<K: Kernel> CveMatrix<K> {
     }
 }
 
-impl<K: Kernel> Matrix for CveMatrix<K> {
-    type Entry = EdgeEntry;
+impl<K: Kernel, V: Vertex> Matrix for CveMatrix<K, V> {
+    type Entry = EdgeEntry<V>;
 
     fn rows(&self) -> usize {
         self.pieces.len()
@@ -536,7 +565,7 @@ impl<K: Kernel> Matrix for CveMatrix<K> {
         self.cols.len()
     }
 
-    fn entry(&self, i: usize, j: usize) -> EdgeEntry {
+    fn entry(&self, i: usize, j: usize) -> EdgeEntry<V> {
         self.lookups.set(self.lookups.get() + 1);
         let pc = &self.pieces[i];
         let q = self.cols[j].pt;
@@ -557,7 +586,7 @@ impl<K: Kernel> Matrix for CveMatrix<K> {
             })
         };
         let q_below = match pb.down {
-            Some(u) => self.fq.cmp_height::<K>(q, u) == Ordering::Less,
+            Some(u) => self.fq.cmp_height::<K, _>(q, u) == Ordering::Less,
             None => vs_q().0 == Ordering::Greater,
         };
         // `q` below `R(e_i)`, or the piece above `R(q_j)`.
@@ -570,7 +599,7 @@ impl<K: Kernel> Matrix for CveMatrix<K> {
             return EdgeEntry::Penalty(self.cols.len() - j);
         }
         let q_above = match pb.up {
-            Some(u) => self.fq.cmp_height::<K>(q, u) == Ordering::Greater,
+            Some(u) => self.fq.cmp_height::<K, _>(q, u) == Ordering::Greater,
             None => vs_q().1 == Ordering::Less,
         };
         // `q` above `R(e_i)`, or the piece below `R(q_j)`.

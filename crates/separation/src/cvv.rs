@@ -16,6 +16,7 @@ use crate::envelope::prepare;
 use crate::error::{Chain, SeparationError};
 use crate::region::{Place, Region, band, regions};
 use crate::result::{Cvv, CvvStats};
+use crate::site::Vertex;
 use crate::wedge::{Apex, apexes};
 
 /// An entry of Amato's matrix `M`, compared exactly by [`compare_entries`]: every `Dist` is smaller
@@ -24,13 +25,13 @@ use crate::wedge::{Apex, apexes};
 /// with `B` "greater than every distance", which in `f64` collapses for large `B` and breaks total
 /// monotonicity.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum MatrixEntry {
+pub enum MatrixEntry<V = DVec2> {
     /// The distance between the row vertex `p` and the column vertex `q` (a candidate pair).
     Dist {
         /// The vertex of `P`.
-        p: DVec2,
+        p: V,
         /// The vertex of `Q`.
-        q: DVec2,
+        q: V,
     },
     /// `B + n_q − j`: the column vertex is below the row's region or the row vertex above the
     /// column's region. Holds `n_q − j`.
@@ -41,10 +42,10 @@ pub enum MatrixEntry {
 
 /// The exact order of [`MatrixEntry`] under kernel `K` (one `cmp_dist4`, degree 2, for two `Dist`).
 #[must_use]
-pub fn compare_entries<K: Kernel>(a: &MatrixEntry, b: &MatrixEntry) -> Ordering {
+pub fn compare_entries<K: Kernel, V: Vertex>(a: &MatrixEntry<V>, b: &MatrixEntry<V>) -> Ordering {
     use MatrixEntry::{Dist, Infinity, Penalty};
     match (a, b) {
-        (Dist { p, q }, Dist { p: r, q: s }) => K::cmp_dist4(*p, *q, *r, *s),
+        (Dist { p, q }, Dist { p: r, q: s }) => V::cmp_dist4::<K>(*p, *q, *r, *s),
         (Penalty(x), Penalty(y)) => x.cmp(y),
         (Infinity, Infinity) => Ordering::Equal,
         (Dist { .. }, _) | (Penalty(_), Infinity) => Ordering::Less,
@@ -56,14 +57,14 @@ pub fn compare_entries<K: Kernel>(a: &MatrixEntry, b: &MatrixEntry) -> Ordering 
 /// survive Lemmas 2–3 in increasing height, columns those of `Q`. Entries are computed on demand in
 /// `O(1)` exact tests each (the regions are precomputed); [`Matrix::entry`] counts its calls.
 #[derive(Clone, Debug)]
-pub struct CvvMatrix<K: Kernel> {
+pub struct CvvMatrix<K: Kernel, V: Vertex = DVec2> {
     frames: Frames,
-    rows: Vec<Apex>,
-    columns: Vec<Apex>,
+    rows: Vec<Apex<V>>,
+    columns: Vec<Apex<V>>,
     /// `R(p_i)`, with `u^±` vertices of `Q`.
-    row_regions: Vec<Region>,
+    row_regions: Vec<Region<V>>,
     /// `R(q_j)`, with `u^±` vertices of `P`.
-    column_regions: Vec<Region>,
+    column_regions: Vec<Region<V>>,
     lookups: Cell<usize>,
     stats: CvvStats,
     kernel: core::marker::PhantomData<K>,
@@ -83,23 +84,25 @@ impl<K: Kernel> CvvMatrix<K> {
         let frames = validate_touching::<K>(p, q, a, b)?
             .frames
             .ok_or(SeparationError::BothChainsTouchLine)?;
-        let pp = prepare::<K>(p, frames.p, Chain::P)?;
-        let qq = prepare::<K>(q, frames.q, Chain::Q)?;
-        let rows = apexes::<K>(&pp, frames.p);
-        let columns = apexes::<K>(&qq, frames.q);
+        let pp = prepare::<K, _>(p, frames.p, Chain::P)?;
+        let qq = prepare::<K, _>(q, frames.q, Chain::Q)?;
+        let rows = apexes::<K, _>(&pp, frames.p);
+        let columns = apexes::<K, _>(&qq, frames.q);
         Ok(Self::from_parts(frames, &pp, &qq, rows, columns))
     }
+}
 
+impl<K: Kernel, V: Vertex> CvvMatrix<K, V> {
     /// The matrix for prepared chains and their Lemma-3 survivors.
     pub(crate) fn from_parts(
         frames: Frames,
-        pp: &Prepared,
-        qq: &Prepared,
-        rows: Vec<Apex>,
-        columns: Vec<Apex>,
+        pp: &Prepared<V>,
+        qq: &Prepared<V>,
+        rows: Vec<Apex<V>>,
+        columns: Vec<Apex<V>>,
     ) -> Self {
-        let row_regions = regions::<K>(&rows, frames.p, &columns, frames.q);
-        let column_regions = regions::<K>(&columns, frames.q, &rows, frames.p);
+        let row_regions = regions::<K, _>(&rows, frames.p, &columns, frames.q);
+        let column_regions = regions::<K, _>(&columns, frames.q, &rows, frames.p);
         let stats = CvvStats {
             p_after_lemma2: pp.pts.len(),
             q_after_lemma2: qq.pts.len(),
@@ -122,8 +125,8 @@ impl<K: Kernel> CvvMatrix<K> {
     /// SMAWK's row minima, then the least `Dist` among them: `(row, column)`, or `None` when no
     /// row minimum is a candidate.
     pub(crate) fn best(&self) -> Option<(usize, usize)> {
-        let minima = row_minima_by(self, compare_entries::<K>);
-        let mut best: Option<(usize, usize, MatrixEntry)> = None;
+        let minima = row_minima_by(self, compare_entries::<K, V>);
+        let mut best: Option<(usize, usize, MatrixEntry<V>)> = None;
         for (i, &j) in minima.iter().enumerate() {
             let e = self.entry(i, j);
             if !matches!(e, MatrixEntry::Dist { .. }) {
@@ -131,7 +134,7 @@ impl<K: Kernel> CvvMatrix<K> {
             }
             if best
                 .as_ref()
-                .is_none_or(|(_, _, b)| compare_entries::<K>(&e, b) == Ordering::Less)
+                .is_none_or(|(_, _, b)| compare_entries::<K, V>(&e, b) == Ordering::Less)
             {
                 best = Some((i, j, e));
             }
@@ -140,7 +143,7 @@ impl<K: Kernel> CvvMatrix<K> {
     }
 
     /// The row apex `i` and column apex `j`.
-    pub(crate) fn apexes_at(&self, i: usize, j: usize) -> (&Apex, &Apex) {
+    pub(crate) fn apexes_at(&self, i: usize, j: usize) -> (&Apex<V>, &Apex<V>) {
         (&self.rows[i], &self.columns[j])
     }
 
@@ -171,8 +174,8 @@ impl<K: Kernel> CvvMatrix<K> {
     }
 }
 
-impl<K: Kernel> Matrix for CvvMatrix<K> {
-    type Entry = MatrixEntry;
+impl<K: Kernel, V: Vertex> Matrix for CvvMatrix<K, V> {
+    type Entry = MatrixEntry<V>;
 
     fn rows(&self) -> usize {
         self.rows.len()
@@ -182,13 +185,13 @@ impl<K: Kernel> Matrix for CvvMatrix<K> {
         self.columns.len()
     }
 
-    fn entry(&self, i: usize, j: usize) -> MatrixEntry {
+    fn entry(&self, i: usize, j: usize) -> MatrixEntry<V> {
         self.lookups.set(self.lookups.get() + 1);
         let (p, q) = (self.rows[i].pt, self.columns[j].pt);
         // q_j relative to R(p_i) (its u^± are vertices of Q), p_i relative to R(q_j); by height
         // bands, which are the regions for apexes (`region::band`).
-        let q_in_rp = band::<K>(self.frames.q, p, &self.row_regions[i], q);
-        let p_in_rq = band::<K>(self.frames.p, q, &self.column_regions[j], p);
+        let q_in_rp = band::<K, _>(self.frames.q, p, &self.row_regions[i], q);
+        let p_in_rq = band::<K, _>(self.frames.p, q, &self.column_regions[j], p);
         if q_in_rp == Place::Below || p_in_rq == Place::Above {
             MatrixEntry::Penalty(self.columns.len() - j)
         } else if q_in_rp == Place::Inside && p_in_rq == Place::Inside {

@@ -49,6 +49,7 @@ use crate::chain::{EnvEdge, Prepared};
 use crate::error::{Chain, SeparationError};
 use crate::frame::Frame;
 use crate::param::Param;
+use crate::site::Vertex;
 
 /// The nearest point of the chain at the height of a breakpoint.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -125,9 +126,9 @@ impl Level {
 }
 
 /// A chain without repeated consecutive vertices, with its edges oriented upward.
-struct Ctx<'a> {
+struct Ctx<'a, V> {
     frame: Frame,
-    v: &'a [DVec2],
+    v: &'a [V],
     /// Caller index of each vertex.
     idx: &'a [usize],
     /// Each edge's lower and upper vertex, `None` for an edge perpendicular to the line.
@@ -142,8 +143,8 @@ struct Ctx<'a> {
 /// vertex involved.
 type Bad = usize;
 
-impl<'a> Ctx<'a> {
-    fn new(frame: Frame, cl: &'a Clean, lohi: &'a [Option<(usize, usize)>], lex: bool) -> Self {
+impl<'a, V: Vertex> Ctx<'a, V> {
+    fn new(frame: Frame, cl: &'a Clean<V>, lohi: &'a [Option<(usize, usize)>], lex: bool) -> Self {
         Ctx {
             frame,
             v: &cl.v,
@@ -169,24 +170,28 @@ impl<'a> Ctx<'a> {
     /// the shear). Degree 2.
     #[inline]
     fn cmp_h<K: Kernel>(&self, p: usize, q: usize) -> Ordering {
-        cmp_heights::<K>(self.frame, self.v[p], self.v[q], self.lex)
+        cmp_heights::<K, V>(self.frame, self.v[p], self.v[q], self.lex)
     }
 }
 
 /// Compares the heights of two points, ties broken by depth (nearer first) when `lex`.
 #[inline]
-fn cmp_heights<K: Kernel>(frame: Frame, p: DVec2, q: DVec2, lex: bool) -> Ordering {
-    match frame.cmp_height::<K>(p, q) {
-        Ordering::Equal if lex => frame.cmp_depth::<K>(p, q),
+fn cmp_heights<K: Kernel, V: Vertex>(frame: Frame, p: V, q: V, lex: bool) -> Ordering {
+    match frame.cmp_height::<K, _>(p, q) {
+        Ordering::Equal if lex => frame.cmp_depth::<K, _>(p, q),
         o => o,
     }
 }
 
 /// Is vertex `w` nearer to the line than edge `e` at `w`'s height (strictly inside `e`'s range)?
-fn vertex_vs_edge<K: Kernel>(c: &Ctx<'_>, w: usize, e: usize) -> Result<Ordering, Bad> {
+fn vertex_vs_edge<K: Kernel, V: Vertex>(
+    c: &Ctx<'_, V>,
+    w: usize,
+    e: usize,
+) -> Result<Ordering, Bad> {
     let (a, b) = c.ends(e);
     // With `e` pointing up, points nearer to the line are on its left in the frame.
-    match c.frame.orient::<K>(c.v[a], c.v[b], c.v[w]) {
+    match c.frame.orient::<K, _>(c.v[a], c.v[b], c.v[w]) {
         Sign::Positive => Ok(Ordering::Less),
         Sign::Negative => Ok(Ordering::Greater),
         Sign::Zero => Err(w), // the vertex lies inside the edge: not simple
@@ -197,16 +202,20 @@ fn vertex_vs_edge<K: Kernel>(c: &Ctx<'_>, w: usize, e: usize) -> Result<Ordering
 /// Disjoint over that interval (simple chain), so one test at the higher of the two bottoms decides;
 /// when that bottom lies on the other edge, they share it and the lower of the two tops decides.
 /// At most four degree-2 tests.
-fn edge_vs_edge<K: Kernel>(c: &Ctx<'_>, e1: usize, e2: usize) -> Result<Ordering, Bad> {
+fn edge_vs_edge<K: Kernel, V: Vertex>(
+    c: &Ctx<'_, V>,
+    e1: usize,
+    e2: usize,
+) -> Result<Ordering, Bad> {
     if e1 == e2 {
         return Ok(Ordering::Equal);
     }
     let ((a1, b1), (a2, b2)) = (c.ends(e1), c.ends(e2));
     if c.cmp_h::<K>(a1, a2) == Ordering::Less {
-        return edge_vs_edge::<K>(c, e2, e1).map(Ordering::reverse);
+        return edge_vs_edge::<K, V>(c, e2, e1).map(Ordering::reverse);
     }
     // a1 is at least as high as a2 and below the top of e2: it is within e2's height range.
-    match c.frame.orient::<K>(c.v[a2], c.v[b2], c.v[a1]) {
+    match c.frame.orient::<K, _>(c.v[a2], c.v[b2], c.v[a1]) {
         Sign::Positive => return Ok(Ordering::Less),
         Sign::Negative => return Ok(Ordering::Greater),
         Sign::Zero => {}
@@ -216,13 +225,13 @@ fn edge_vs_edge<K: Kernel>(c: &Ctx<'_>, e1: usize, e2: usize) -> Result<Ordering
     }
     // A common bottom vertex: the lower top lies within the other edge's range.
     if c.cmp_h::<K>(b1, b2) != Ordering::Greater {
-        match c.frame.orient::<K>(c.v[a2], c.v[b2], c.v[b1]) {
+        match c.frame.orient::<K, _>(c.v[a2], c.v[b2], c.v[b1]) {
             Sign::Positive => Ok(Ordering::Less),
             Sign::Negative => Ok(Ordering::Greater),
             Sign::Zero => Err(b1), // the edges overlap
         }
     } else {
-        match c.frame.orient::<K>(c.v[a1], c.v[b1], c.v[b2]) {
+        match c.frame.orient::<K, _>(c.v[a1], c.v[b1], c.v[b2]) {
             Sign::Positive => Ok(Ordering::Greater),
             Sign::Negative => Ok(Ordering::Less),
             Sign::Zero => Err(b2),
@@ -231,26 +240,26 @@ fn edge_vs_edge<K: Kernel>(c: &Ctx<'_>, e1: usize, e2: usize) -> Result<Ordering
 }
 
 /// The nearer of two points of the chain at the same height.
-fn nearer<K: Kernel>(c: &Ctx<'_>, x: At, y: At) -> Result<At, Bad> {
+fn nearer<K: Kernel, V: Vertex>(c: &Ctx<'_, V>, x: At, y: At) -> Result<At, Bad> {
     let o = match (x, y) {
         (At::Vertex(u), At::Vertex(w)) => {
             if u == w {
                 return Ok(x);
             }
-            match c.frame.cmp_depth::<K>(c.v[u], c.v[w]) {
+            match c.frame.cmp_depth::<K, _>(c.v[u], c.v[w]) {
                 Ordering::Equal => return Err(w), // two vertices at one point: not simple
                 o => o,
             }
         }
-        (At::Vertex(u), At::Edge(e)) => vertex_vs_edge::<K>(c, u, e)?,
-        (At::Edge(e), At::Vertex(u)) => vertex_vs_edge::<K>(c, u, e)?.reverse(),
-        (At::Edge(e), At::Edge(f)) => edge_vs_edge::<K>(c, e, f)?,
+        (At::Vertex(u), At::Edge(e)) => vertex_vs_edge::<K, V>(c, u, e)?,
+        (At::Edge(e), At::Vertex(u)) => vertex_vs_edge::<K, V>(c, u, e)?.reverse(),
+        (At::Edge(e), At::Edge(f)) => edge_vs_edge::<K, V>(c, e, f)?,
     };
     Ok(if o == Ordering::Greater { y } else { x })
 }
 
 /// Appends the envelope of a single edge.
-fn leaf<K: Kernel>(c: &Ctx<'_>, e: usize, ends: (usize, usize), out: &mut Level) {
+fn leaf<K: Kernel, V: Vertex>(c: &Ctx<'_, V>, e: usize, ends: (usize, usize), out: &mut Level) {
     let start = out.bps.len();
     match c.lohi[e] {
         Some((a, b)) => {
@@ -260,7 +269,7 @@ fn leaf<K: Kernel>(c: &Ctx<'_>, e: usize, ends: (usize, usize), out: &mut Level)
         None => {
             // Perpendicular to the line: only the nearer end is visible.
             let (u, w) = ends;
-            let k = if c.frame.cmp_depth::<K>(c.v[w], c.v[u]) == Ordering::Less {
+            let k = if c.frame.cmp_depth::<K, _>(c.v[w], c.v[u]) == Ordering::Less {
                 w
             } else {
                 u
@@ -272,15 +281,20 @@ fn leaf<K: Kernel>(c: &Ctx<'_>, e: usize, ends: (usize, usize), out: &mut Level)
 }
 
 /// Appends `lo` then `hi`, whose height ranges meet at most at `lo`'s top = `hi`'s bottom.
-fn concat<K: Kernel>(c: &Ctx<'_>, lo: Env<'_>, hi: Env<'_>, out: &mut Level) -> Result<(), Bad> {
+fn concat<K: Kernel, V: Vertex>(
+    c: &Ctx<'_, V>,
+    lo: Env<'_>,
+    hi: Env<'_>,
+    out: &mut Level,
+) -> Result<(), Bad> {
     out.bps.extend_from_slice(lo.bps);
     let (Some(top), Some(bot)) = (lo.bps.last(), hi.bps.first()) else {
         out.bps.extend_from_slice(hi.bps);
         return Ok(());
     };
-    if c.frame.cmp_height::<K>(c.v[top.y], c.v[bot.y]) == Ordering::Equal {
+    if c.frame.cmp_height::<K, _>(c.v[top.y], c.v[bot.y]) == Ordering::Equal {
         // One breakpoint at the common height, with `hi`'s gap above (`lo`'s last is `None`).
-        let at = nearer::<K>(c, top.at, bot.at)?;
+        let at = nearer::<K, V>(c, top.at, bot.at)?;
         if let Some(last) = out.bps.last_mut() {
             last.at = at;
             last.gap = bot.gap;
@@ -294,7 +308,12 @@ fn concat<K: Kernel>(c: &Ctx<'_>, lo: Env<'_>, hi: Env<'_>, out: &mut Level) -> 
 }
 
 /// Appends the envelope of the union of two sub-chains. `O(|a| + |b|)` tests of degree 2.
-fn merge<K: Kernel>(c: &Ctx<'_>, a: Env<'_>, b: Env<'_>, out: &mut Level) -> Result<(), Bad> {
+fn merge<K: Kernel, V: Vertex>(
+    c: &Ctx<'_, V>,
+    a: Env<'_>,
+    b: Env<'_>,
+    out: &mut Level,
+) -> Result<(), Bad> {
     let start = out.bps.len();
     let (Some(a_top), Some(b_top)) = (a.bps.last(), b.bps.last()) else {
         out.bps
@@ -303,13 +322,13 @@ fn merge<K: Kernel>(c: &Ctx<'_>, a: Env<'_>, b: Env<'_>, out: &mut Level) -> Res
         return Ok(());
     };
     let (a_top, b_top, a_bot, b_bot) = (a_top.y, b_top.y, a.bps[0].y, b.bps[0].y);
-    if c.frame.cmp_height::<K>(c.v[a_top], c.v[b_bot]) != Ordering::Greater {
-        concat::<K>(c, a, b, out)?;
+    if c.frame.cmp_height::<K, _>(c.v[a_top], c.v[b_bot]) != Ordering::Greater {
+        concat::<K, V>(c, a, b, out)?;
         out.close(start);
         return Ok(());
     }
-    if c.frame.cmp_height::<K>(c.v[b_top], c.v[a_bot]) != Ordering::Greater {
-        concat::<K>(c, b, a, out)?;
+    if c.frame.cmp_height::<K, _>(c.v[b_top], c.v[a_bot]) != Ordering::Greater {
+        concat::<K, V>(c, b, a, out)?;
         out.close(start);
         return Ok(());
     }
@@ -325,14 +344,14 @@ fn merge<K: Kernel>(c: &Ctx<'_>, a: Env<'_>, b: Env<'_>, out: &mut Level) -> Res
         } else if j == nb {
             Ordering::Less
         } else {
-            c.frame.cmp_height::<K>(c.v[a.bps[i].y], c.v[b.bps[j].y])
+            c.frame.cmp_height::<K, _>(c.v[a.bps[i].y], c.v[b.bps[j].y])
         };
         let (y, pt) = match o {
             Ordering::Less => {
                 let (y, p) = (a.bps[i].y, a.bps[i].at);
                 i += 1;
                 match b.open(j) {
-                    Some(e) => (y, nearer::<K>(c, p, At::Edge(e))?),
+                    Some(e) => (y, nearer::<K, V>(c, p, At::Edge(e))?),
                     None => (y, p),
                 }
             }
@@ -340,13 +359,13 @@ fn merge<K: Kernel>(c: &Ctx<'_>, a: Env<'_>, b: Env<'_>, out: &mut Level) -> Res
                 let (y, p) = (b.bps[j].y, b.bps[j].at);
                 j += 1;
                 match a.open(i) {
-                    Some(e) => (y, nearer::<K>(c, At::Edge(e), p)?),
+                    Some(e) => (y, nearer::<K, V>(c, At::Edge(e), p)?),
                     None => (y, p),
                 }
             }
             Ordering::Equal => {
                 let y = a.bps[i].y;
-                let p = nearer::<K>(c, a.bps[i].at, b.bps[j].at)?;
+                let p = nearer::<K, V>(c, a.bps[i].at, b.bps[j].at)?;
                 i += 1;
                 j += 1;
                 (y, p)
@@ -358,7 +377,7 @@ fn merge<K: Kernel>(c: &Ctx<'_>, a: Env<'_>, b: Env<'_>, out: &mut Level) -> Res
                     let o = match last {
                         Some((x, z, o)) if (x, z) == (e, f) => o,
                         _ => {
-                            let o = edge_vs_edge::<K>(c, e, f)?;
+                            let o = edge_vs_edge::<K, V>(c, e, f)?;
                             last = Some((e, f, o));
                             o
                         }
@@ -400,8 +419,8 @@ fn coalesce(out: &mut Level, start: usize) {
 }
 
 /// A chain with repeated consecutive vertices dropped and a closing repeat removed.
-struct Clean {
-    v: Vec<DVec2>,
+struct Clean<V> {
+    v: Vec<V>,
     idx: Vec<usize>,
     /// `(from, to, caller edge index)`.
     edges: Vec<(usize, usize, usize)>,
@@ -411,8 +430,8 @@ struct Clean {
 /// three distinct vertices) is closed: the repeat is removed and the closing edge joins the last
 /// vertex to vertex 0. The caller's edge index of the edge into vertex `k` is the caller index of
 /// `k`'s first occurrence minus one.
-fn clean(chain: &[DVec2], which: Chain) -> Result<Clean, SeparationError> {
-    let mut v: Vec<DVec2> = Vec::with_capacity(chain.len());
+fn clean<V: Vertex>(chain: &[V], which: Chain) -> Result<Clean<V>, SeparationError> {
+    let mut v: Vec<V> = Vec::with_capacity(chain.len());
     let mut idx: Vec<usize> = Vec::with_capacity(chain.len());
     for (i, &x) in chain.iter().enumerate() {
         if v.last() != Some(&x) {
@@ -444,12 +463,13 @@ fn clean(chain: &[DVec2], which: Chain) -> Result<Clean, SeparationError> {
 }
 
 /// The envelope of a cleaned chain, as visible vertices and one edge between each two.
-fn to_prepared<K: Kernel>(
-    c: &Ctx<'_>,
-    cl: &Clean,
+fn to_prepared<K: Kernel, V: Vertex>(
+    c: &Ctx<'_, V>,
+    cl: &Clean<V>,
     env: Env<'_>,
     which: Chain,
-) -> Result<Prepared, SeparationError> {
+    gapped: bool,
+) -> Result<Prepared<V>, SeparationError> {
     let bps = env.bps;
     let mut out = Prepared {
         pts: Vec::with_capacity(bps.len()),
@@ -469,21 +489,26 @@ fn to_prepared<K: Kernel>(
     // The last breakpoint's gap (`None`) is not an interval.
     for pair in bps.windows(2) {
         let Some(e) = pair[0].gap else {
+            if gapped {
+                // No point of the runs between the two heights.
+                out.edges.push(None);
+                continue;
+            }
             return Err(c.bad(pair[0].y, which));
         };
         let (a, b) = c.ends(e);
         let (vk, vk1) = (pair[0].y, pair[1].y);
-        let lo = if a == vk || c.frame.cmp_height::<K>(c.v[a], c.v[vk]) == Ordering::Equal {
+        let lo = if a == vk || c.frame.cmp_height::<K, _>(c.v[a], c.v[vk]) == Ordering::Equal {
             Param::Start
         } else {
             Param::Root(c.frame.height_minus(c.v[vk]))
         };
-        let hi = if b == vk1 || c.frame.cmp_height::<K>(c.v[b], c.v[vk1]) == Ordering::Equal {
+        let hi = if b == vk1 || c.frame.cmp_height::<K, _>(c.v[b], c.v[vk1]) == Ordering::Equal {
             Param::End
         } else {
             Param::Root(c.frame.height_minus(c.v[vk1]))
         };
-        out.edges.push(EnvEdge {
+        out.edges.push(Some(EnvEdge {
             a: c.v[a],
             b: c.v[b],
             ia: c.idx[a],
@@ -491,7 +516,7 @@ fn to_prepared<K: Kernel>(
             caller: cl.edges[e].2,
             lo,
             hi,
-        });
+        }));
     }
     Ok(out)
 }
@@ -501,7 +526,7 @@ fn to_prepared<K: Kernel>(
 /// height test per edge, a depth test only on the perpendicular ones.
 type Lohi = Vec<Option<(usize, usize)>>;
 
-fn orient_edges<K: Kernel>(frame: Frame, cl: &Clean) -> (Lohi, Lohi) {
+fn orient_edges<K: Kernel, V: Vertex>(frame: Frame, cl: &Clean<V>) -> (Lohi, Lohi) {
     cl.edges
         .iter()
         .map(|&(u, w, _)| {
@@ -510,8 +535,8 @@ fn orient_edges<K: Kernel>(frame: Frame, cl: &Clean) -> (Lohi, Lohi) {
                 Ordering::Greater => Some((w, u)),
                 Ordering::Equal => None,
             };
-            match frame.cmp_height::<K>(cl.v[u], cl.v[w]) {
-                Ordering::Equal => (None, up(frame.cmp_depth::<K>(cl.v[u], cl.v[w]))),
+            match frame.cmp_height::<K, _>(cl.v[u], cl.v[w]) {
+                Ordering::Equal => (None, up(frame.cmp_depth::<K, _>(cl.v[u], cl.v[w]))),
                 o => (up(o), up(o)),
             }
         })
@@ -606,8 +631,8 @@ enum Walk {
 /// nearer to the line than the envelope just beyond `cur` on that side: replaces the envelope
 /// while it stays in front, stopping at `b` or behind the first visible vertex nearer than it.
 /// Every step but the last removes a node for good.
-fn sweep<K: Kernel>(
-    c: &Ctx<'_>,
+fn sweep<K: Kernel, V: Vertex>(
+    c: &Ctx<'_, V>,
     list: &mut List,
     cur: usize,
     e: usize,
@@ -634,13 +659,13 @@ fn sweep<K: Kernel>(
             // `e` ends before `nxt`, in front of the edge there, which passes behind `b`: one
             // test confirms it (a `b` on that edge is a chain that is not simple).
             let f = if up { list.up[cur] } else { list.up[nxt] };
-            if vertex_vs_edge::<K>(c, b, f)? != Ordering::Less {
+            if vertex_vs_edge::<K, V>(c, b, f)? != Ordering::Less {
                 return Err(b);
             }
             list.attach(cur, b, e, up);
             return Ok(Walk::Visible(b));
         }
-        match vertex_vs_edge::<K>(c, nxt, e)? {
+        match vertex_vs_edge::<K, V>(c, nxt, e)? {
             Ordering::Less => {
                 // `nxt` is nearer: `e` goes behind it, the gap at `nxt` faces `cur`.
                 if up {
@@ -670,7 +695,13 @@ fn sweep<K: Kernel>(
 
 /// The walk's edge `e` toward `b`, behind the envelope and inside its height range at its start:
 /// in view again beyond `b` if `b` is past the end of the range it moves toward.
-fn past_the_ends<K: Kernel>(c: &Ctx<'_>, list: &mut List, e: usize, b: usize, up: bool) -> Walk {
+fn past_the_ends<K: Kernel, V: Vertex>(
+    c: &Ctx<'_, V>,
+    list: &mut List,
+    e: usize,
+    b: usize,
+    up: bool,
+) -> Walk {
     let (end, beyond) = if up {
         (list.tail, Ordering::Greater)
     } else {
@@ -694,7 +725,7 @@ fn past_the_ends<K: Kernel>(c: &Ctx<'_>, list: &mut List, e: usize, b: usize, up
 /// # Complexity
 /// `O(n)`: each edge costs `O(1)` degree-2 tests plus one per node it removes, and a node is
 /// removed at most once.
-fn scan<K: Kernel>(c: &Ctx<'_>, m: usize) -> Result<(Vec<usize>, Vec<usize>), Bad> {
+fn scan<K: Kernel, V: Vertex>(c: &Ctx<'_, V>, m: usize) -> Result<(Vec<usize>, Vec<usize>), Bad> {
     if m <= 1 {
         return Ok(((0..m).collect(), Vec::new()));
     }
@@ -727,14 +758,15 @@ fn scan<K: Kernel>(c: &Ctx<'_>, m: usize) -> Result<(Vec<usize>, Vec<usize>), Ba
                 // The edge beside `a` on the walk's side; only the walk's previous edge `e − 1`
                 // (the one other edge at `a`) can start at `a` there and hide `e`.
                 let side = if up { list.up[u] } else { list.down(u) };
-                let behind = side == e - 1 && edge_vs_edge::<K>(c, e, e - 1)? == Ordering::Greater;
+                let behind =
+                    side == e - 1 && edge_vs_edge::<K, V>(c, e, e - 1)? == Ordering::Greater;
                 if behind {
                     // Between `e − 1` and the edge passing behind `a` on the other side (or
                     // the end of the range there).
                     let other = if up { list.down(u) } else { list.up[u] };
                     if other == NIL {
                         // `e` may still pass the far end of the range.
-                        past_the_ends::<K>(c, &mut list, e, b, up)
+                        past_the_ends::<K, V>(c, &mut list, e, b, up)
                     } else {
                         Walk::Hidden(Exit::Gap {
                             w: u,
@@ -743,10 +775,10 @@ fn scan<K: Kernel>(c: &Ctx<'_>, m: usize) -> Result<(Vec<usize>, Vec<usize>), Ba
                         })
                     }
                 } else {
-                    sweep::<K>(c, &mut list, u, e, b, up)?
+                    sweep::<K, V>(c, &mut list, u, e, b, up)?
                 }
             }
-            Walk::Hidden(Exit::Ends) => past_the_ends::<K>(c, &mut list, e, b, up),
+            Walk::Hidden(Exit::Ends) => past_the_ends::<K, V>(c, &mut list, e, b, up),
             Walk::Hidden(Exit::Gap { w, up: side, f }) => {
                 // Out through the gap: across `w`'s height from its hidden side to its visible
                 // side, between `w` and `f`.
@@ -758,10 +790,10 @@ fn scan<K: Kernel>(c: &Ctx<'_>, m: usize) -> Result<(Vec<usize>, Vec<usize>), Ba
                 let out = up == side
                     && c.cmp_h::<K>(a, w) == before
                     && c.cmp_h::<K>(b, w) == after
-                    && vertex_vs_edge::<K>(c, w, e)? == Ordering::Less
-                    && edge_vs_edge::<K>(c, e, f)? == Ordering::Less;
+                    && vertex_vs_edge::<K, V>(c, w, e)? == Ordering::Less
+                    && edge_vs_edge::<K, V>(c, e, f)? == Ordering::Less;
                 if out {
-                    sweep::<K>(c, &mut list, w, e, b, up)?
+                    sweep::<K, V>(c, &mut list, w, e, b, up)?
                 } else {
                     walk
                 }
@@ -797,23 +829,24 @@ fn scan<K: Kernel>(c: &Ctx<'_>, m: usize) -> Result<(Vec<usize>, Vec<usize>), Ba
 /// [`SeparationError::NotSimple`] when the chain is seen not to be simple (a vertex on another
 /// edge, overlapping edges, two vertices at one point, a closed chain of two vertices); under the
 /// Fast kernel also for inconsistent decisions. Not every non-simple chain is detected.
-pub(crate) fn prepare<K: Kernel>(
-    chain: &[DVec2],
+pub(crate) fn prepare<K: Kernel, V: Vertex>(
+    chain: &[V],
     frame: Frame,
     which: Chain,
-) -> Result<Prepared, SeparationError> {
+) -> Result<Prepared<V>, SeparationError> {
     let cl = clean(chain, which)?;
     let m = cl.v.len();
-    let (lohi, sheared) = orient_edges::<K>(frame, &cl);
+    let (lohi, sheared) = orient_edges::<K, V>(frame, &cl);
     let s = Ctx::new(frame, &cl, &sheared, true);
     let c = Ctx::new(frame, &cl, &lohi, false);
-    let (nodes, edges) = scan::<K>(&s, m).map_err(|w| c.bad(w, which))?;
+    let (nodes, edges) = scan::<K, V>(&s, m).map_err(|w| c.bad(w, which))?;
     // Collapse the nodes at one true height to the first (the nearest): the edge below the
     // group is the one below its first node, the edge above it the one above its last.
     let mut level = Level::with_capacity(nodes.len() + 2);
     for (k, &u) in nodes.iter().enumerate() {
         let gap = edges.get(k).copied();
-        let same = k > 0 && c.frame.cmp_height::<K>(c.v[nodes[k - 1]], c.v[u]) == Ordering::Equal;
+        let same =
+            k > 0 && c.frame.cmp_height::<K, _>(c.v[nodes[k - 1]], c.v[u]) == Ordering::Equal;
         if same {
             if let Some(last) = level.bps.last_mut() {
                 last.gap = gap;
@@ -825,26 +858,109 @@ pub(crate) fn prepare<K: Kernel>(
     level.close(0);
     // A closed chain has as many edges as vertices, its closing edge (`m − 1` → 0) last.
     if m == 0 || cl.edges.len() != m {
-        return to_prepared::<K>(&c, &cl, level.env(0), which);
+        return to_prepared::<K, V>(&c, &cl, level.env(0), which, false);
     }
     let z = m - 1;
     let (u, w, _) = cl.edges[z];
-    leaf::<K>(&c, z, (u, w), &mut level);
+    leaf::<K, V>(&c, z, (u, w), &mut level);
     let mut out = Level::with_capacity(level.bps.len());
-    merge::<K>(&c, level.env(0), level.env(1), &mut out).map_err(|w| c.bad(w, which))?;
-    to_prepared::<K>(&c, &cl, out.env(0), which)
+    merge::<K, V>(&c, level.env(0), level.env(1), &mut out).map_err(|w| c.bad(w, which))?;
+    to_prepared::<K, V>(&c, &cl, out.env(0), which, false)
+}
+
+/// Lemma 2 for a chain clipped to its half-plane: the runs `runs` (inclusive position ranges of
+/// `chain`, in order, disjoint; each a simple polyline, consecutive positions joined by an edge
+/// only within a run) as one point set, whose envelope has gaps where no run covers a height
+/// (docs/algorithms/separator.md, "Step G"). Each run's envelope by [`scan`], then the envelopes
+/// merged pairwise in a balanced tree.
+///
+/// # Complexity
+/// `O(n log k)` degree-2 tests for `k` runs (each round of merges is linear); `O(n)` for one run.
+///
+/// # Errors
+/// As [`prepare`]: [`SeparationError::NotSimple`] when the runs are seen not to be simple or to
+/// meet each other.
+pub(crate) fn prepare_runs<K: Kernel, V: Vertex>(
+    chain: &[V],
+    runs: &[(usize, usize)],
+    frame: Frame,
+    which: Chain,
+) -> Result<Prepared<V>, SeparationError> {
+    let m = chain.len();
+    // Every position its own index; edge `k` joins positions `k` and `k + 1` (those between runs
+    // are never walked nor merged: no envelope names them).
+    let cl = Clean {
+        v: chain.to_vec(),
+        idx: (0..m).collect(),
+        edges: (1..m).map(|k| (k - 1, k, k - 1)).collect(),
+    };
+    let (lohi, sheared) = orient_edges::<K, V>(frame, &cl);
+    let c = Ctx::new(frame, &cl, &lohi, false);
+    let mut level = Level::with_capacity(m + 2);
+    let mut local: Vec<Option<(usize, usize)>> = Vec::new();
+    for &(s, t) in runs {
+        if s > t || t >= m {
+            return Err(SeparationError::Inconsistent);
+        }
+        // The run's own walk, in its own positions.
+        local.clear();
+        local.extend(sheared[s..t].iter().map(|x| x.map(|(u, w)| (u - s, w - s))));
+        let sc = Ctx {
+            frame,
+            v: &cl.v[s..=t],
+            idx: &cl.idx[s..=t],
+            lohi: &local,
+            lex: true,
+        };
+        let (nodes, edges) = scan::<K, V>(&sc, t + 1 - s).map_err(|w| c.bad(w + s, which))?;
+        // Collapsed as in [`prepare`], in the chain's positions.
+        let start = level.bps.len();
+        for (k, &u) in nodes.iter().enumerate() {
+            let (u, gap) = (u + s, edges.get(k).map(|&e| e + s));
+            let same = k > 0
+                && c.frame.cmp_height::<K, _>(c.v[nodes[k - 1] + s], c.v[u]) == Ordering::Equal;
+            if same {
+                if let Some(last) = level.bps.last_mut() {
+                    last.gap = gap;
+                }
+            } else {
+                level.push(u, At::Vertex(u), gap);
+            }
+        }
+        level.close(start);
+    }
+    // Balanced merging: each round halves the number of envelopes.
+    while level.segs.len() > 1 {
+        let count = level.segs.len();
+        let mut next = Level::with_capacity(level.bps.len());
+        for i in (0..count).step_by(2) {
+            if i + 1 < count {
+                merge::<K, V>(&c, level.env(i), level.env(i + 1), &mut next)
+                    .map_err(|w| c.bad(w, which))?;
+            } else {
+                let start = next.bps.len();
+                next.bps.extend_from_slice(level.env(i).bps);
+                next.close(start);
+            }
+        }
+        level = next;
+    }
+    if level.segs.is_empty() {
+        level.close(0);
+    }
+    to_prepared::<K, V>(&c, &cl, level.env(0), which, true)
 }
 
 /// The `O(n²)` twin of [`prepare`]: for every distinct vertex height, the nearest point of the
 /// chain at that height by comparing all vertices and all edges crossing it; for every elementary
 /// slab between consecutive heights, the nearest edge by comparing all edges spanning it.
-pub(crate) fn prepare_brute<K: Kernel>(
-    chain: &[DVec2],
+pub(crate) fn prepare_brute<K: Kernel, V: Vertex>(
+    chain: &[V],
     frame: Frame,
     which: Chain,
-) -> Result<Prepared, SeparationError> {
+) -> Result<Prepared<V>, SeparationError> {
     let cl = clean(chain, which)?;
-    let (lohi, _) = orient_edges::<K>(frame, &cl);
+    let (lohi, _) = orient_edges::<K, V>(frame, &cl);
     let c = Ctx::new(frame, &cl, &lohi, false);
     let m = cl.v.len();
     // Distinct heights, each given by its first vertex, in increasing order (insertion sort by
@@ -853,20 +969,20 @@ pub(crate) fn prepare_brute<K: Kernel>(
     for w in 0..m {
         let pos = hs
             .iter()
-            .position(|&h| frame.cmp_height::<K>(cl.v[w], cl.v[h]) != Ordering::Greater);
+            .position(|&h| frame.cmp_height::<K, _>(cl.v[w], cl.v[h]) != Ordering::Greater);
         match pos {
-            Some(p) if frame.cmp_height::<K>(cl.v[w], cl.v[hs[p]]) == Ordering::Equal => {}
+            Some(p) if frame.cmp_height::<K, _>(cl.v[w], cl.v[hs[p]]) == Ordering::Equal => {}
             Some(p) => hs.insert(p, w),
             None => hs.push(w),
         }
     }
     let spans = |e: usize, y: usize, strict_top: bool| {
         lohi[e].is_some_and(|(a, b)| {
-            frame.cmp_height::<K>(cl.v[a], cl.v[y]) == Ordering::Less
+            frame.cmp_height::<K, _>(cl.v[a], cl.v[y]) == Ordering::Less
                 && if strict_top {
-                    frame.cmp_height::<K>(cl.v[b], cl.v[y]) == Ordering::Greater
+                    frame.cmp_height::<K, _>(cl.v[b], cl.v[y]) == Ordering::Greater
                 } else {
-                    frame.cmp_height::<K>(cl.v[b], cl.v[y]) != Ordering::Less
+                    frame.cmp_height::<K, _>(cl.v[b], cl.v[y]) != Ordering::Less
                 }
         })
     };
@@ -875,10 +991,10 @@ pub(crate) fn prepare_brute<K: Kernel>(
     for (k, &h) in hs.iter().enumerate() {
         let mut best: Option<At> = None;
         for w in 0..m {
-            if frame.cmp_height::<K>(cl.v[w], cl.v[h]) == Ordering::Equal {
+            if frame.cmp_height::<K, _>(cl.v[w], cl.v[h]) == Ordering::Equal {
                 best = Some(match best {
                     None => At::Vertex(w),
-                    Some(x) => nearer::<K>(&c, x, At::Vertex(w)).map_err(bad)?,
+                    Some(x) => nearer::<K, V>(&c, x, At::Vertex(w)).map_err(bad)?,
                 });
             }
         }
@@ -886,7 +1002,7 @@ pub(crate) fn prepare_brute<K: Kernel>(
             if spans(e, h, true) {
                 best = Some(match best {
                     None => At::Edge(e),
-                    Some(x) => nearer::<K>(&c, x, At::Edge(e)).map_err(bad)?,
+                    Some(x) => nearer::<K, V>(&c, x, At::Edge(e)).map_err(bad)?,
                 });
             }
         }
@@ -896,13 +1012,13 @@ pub(crate) fn prepare_brute<K: Kernel>(
             let mut g: Option<usize> = None;
             for (e, ends) in lohi.iter().enumerate() {
                 let Some((a, b)) = *ends else { continue };
-                if frame.cmp_height::<K>(cl.v[a], cl.v[h]) != Ordering::Greater
-                    && frame.cmp_height::<K>(cl.v[b], cl.v[h]) == Ordering::Greater
+                if frame.cmp_height::<K, _>(cl.v[a], cl.v[h]) != Ordering::Greater
+                    && frame.cmp_height::<K, _>(cl.v[b], cl.v[h]) == Ordering::Greater
                 {
                     g = Some(match g {
                         None => e,
                         Some(f) => {
-                            if edge_vs_edge::<K>(&c, e, f).map_err(bad)? == Ordering::Less {
+                            if edge_vs_edge::<K, V>(&c, e, f).map_err(bad)? == Ordering::Less {
                                 e
                             } else {
                                 f
@@ -919,7 +1035,7 @@ pub(crate) fn prepare_brute<K: Kernel>(
     }
     coalesce(&mut env, 0);
     env.close(0);
-    to_prepared::<K>(&c, &cl, env.env(0), which)
+    to_prepared::<K, V>(&c, &cl, env.env(0), which, false)
 }
 
 /// The perpendicular-visibility envelope of one chain (Lemma 2), in the caller's indices: what
@@ -976,7 +1092,7 @@ fn public<K: Kernel>(
     };
     if let Some(index) = chain
         .iter()
-        .position(|&v| frame.depth_sign::<K>(v) == Sign::Negative)
+        .position(|&v| frame.depth_sign::<K, _>(v) == Sign::Negative)
     {
         return Err(SeparationError::NotSeparated {
             chain: Chain::P,
@@ -984,16 +1100,17 @@ fn public<K: Kernel>(
         });
     }
     let prep = if brute {
-        prepare_brute::<K>(chain, frame, Chain::P)?
+        prepare_brute::<K, _>(chain, frame, Chain::P)?
     } else {
-        prepare::<K>(chain, frame, Chain::P)?
+        prepare::<K, _>(chain, frame, Chain::P)?
     };
     Ok(Envelope {
         vertices: prep.idx.clone(),
-        edges: prep.edges.iter().map(|e| e.caller).collect(),
+        edges: prep.edges.iter().flatten().map(|e| e.caller).collect(),
         shadows: prep
             .edges
             .iter()
+            .flatten()
             .map(|e| {
                 (
                     matches!(e.lo, Param::Root(_)),

@@ -7,6 +7,7 @@ use glam::DVec2;
 use polydist_predicates::{Kernel, Sign};
 
 use crate::param::Affine;
+use crate::site::Vertex;
 
 /// The oriented separating line `l` (through `l0`, `l1`, the chain `Q` on its left) seen from one
 /// chain.
@@ -24,29 +25,29 @@ pub(crate) struct Frame {
 impl Frame {
     /// Compares the heights of `a` and `b` along the line: `sign((a − b) · d)` (degree 2).
     #[inline]
-    pub(crate) fn cmp_height<K: Kernel>(&self, a: DVec2, b: DVec2) -> Ordering {
+    pub(crate) fn cmp_height<K: Kernel, V: Vertex>(&self, a: V, b: V) -> Ordering {
         // Equal points: an exact zero, decided here rather than by the kernel's exact stage.
         if a == b {
             return Ordering::Equal;
         }
-        K::dot_sign(b, a, self.l0, self.l1).to_ordering()
+        V::dot_sign::<K>(b, a, V::input(self.l0), V::input(self.l1)).to_ordering()
     }
 
     /// Compares the depths (distances to the line, on this chain's side) of `a` and `b`:
     /// `sign((a − b) × d)`, negated for the mirrored chain (degree 2).
     #[inline]
-    pub(crate) fn cmp_depth<K: Kernel>(&self, a: DVec2, b: DVec2) -> Ordering {
+    pub(crate) fn cmp_depth<K: Kernel, V: Vertex>(&self, a: V, b: V) -> Ordering {
         if a == b {
             return Ordering::Equal;
         }
-        let s = K::cross_sign(b, a, self.l0, self.l1);
+        let s = V::cross_sign::<K>(b, a, V::input(self.l0), V::input(self.l1));
         if self.mirror { s.reversed() } else { s }.to_ordering()
     }
 
     /// The sign of the depth of `z`: positive on this chain's side, zero on the line (degree 2).
     #[inline]
-    pub(crate) fn depth_sign<K: Kernel>(&self, z: DVec2) -> Sign {
-        let s = K::orient(self.l0, self.l1, z).sign();
+    pub(crate) fn depth_sign<K: Kernel, V: Vertex>(&self, z: V) -> Sign {
+        let s = V::orient::<K>(V::input(self.l0), V::input(self.l1), z).sign();
         // P is on the right (orient < 0 means positive depth); Q on the left.
         if self.mirror { s } else { s.reversed() }
     }
@@ -54,40 +55,40 @@ impl Frame {
     /// The orientation of `(a, b, c)` in this frame: the real orientation, negated for the mirrored
     /// chain (degree 2).
     #[inline]
-    pub(crate) fn orient<K: Kernel>(&self, a: DVec2, b: DVec2, c: DVec2) -> Sign {
+    pub(crate) fn orient<K: Kernel, V: Vertex>(&self, a: V, b: V, c: V) -> Sign {
         if a == b || b == c || a == c {
             return Sign::Zero;
         }
-        let s = K::orient(a, b, c).sign();
+        let s = V::orient::<K>(a, b, c).sign();
         if self.mirror { s.reversed() } else { s }
     }
 }
 
 impl Frame {
     /// `x ↦ depth(x) − depth(t)` in this frame: `±(x − t) × d`.
-    pub(crate) fn depth_minus(&self, t: DVec2) -> Affine {
+    pub(crate) fn depth_minus<V: Vertex>(&self, t: V) -> Affine<V> {
         Affine {
             cross: true,
             c: t,
-            v0: self.l0,
-            v1: self.l1,
+            v0: V::input(self.l0),
+            v1: V::input(self.l1),
             neg: self.mirror,
         }
     }
 
     /// `x ↦ H(x) − H(t)`: `(x − t) · d`.
-    pub(crate) fn height_minus(&self, t: DVec2) -> Affine {
+    pub(crate) fn height_minus<V: Vertex>(&self, t: V) -> Affine<V> {
         Affine {
             cross: false,
             c: t,
-            v0: self.l0,
-            v1: self.l1,
+            v0: V::input(self.l0),
+            v1: V::input(self.l1),
             neg: false,
         }
     }
 
     /// `x ↦ orient(x, h, u)` in this frame: `∓(x − h) × (u − h)`.
-    pub(crate) fn orient_x_first(&self, h: DVec2, u: DVec2) -> Affine {
+    pub(crate) fn orient_x_first<V: Vertex>(&self, h: V, u: V) -> Affine<V> {
         Affine {
             cross: true,
             c: h,
@@ -98,7 +99,7 @@ impl Frame {
     }
 
     /// `x ↦ orient(u, w, x)` in this frame: `∓(x − u) × (w − u)`.
-    pub(crate) fn orient_x_last(&self, u: DVec2, w: DVec2) -> Affine {
+    pub(crate) fn orient_x_last<V: Vertex>(&self, u: V, w: V) -> Affine<V> {
         Affine {
             cross: true,
             c: u,

@@ -33,12 +33,12 @@
 //! | [`closest_visible_vertices_brute`], [`separation_brute`], [`perpendicular_envelope_brute`] | brute-force twins (test references, benchmark baselines) | done |
 //! | [`separation`], [`separation_of_disjoint`], [`intersection`], [`polygon_separation_brute`] | whole simple polygons: the exact intersection check (`O(N log N)`, only when the hulls meet), the disjoint-hull route (hull features, or section 3 on both boundaries across a line through a hull edge) | done for disjoint hulls |
 //! | [`Route::MonotoneSweep`] (inside [`separation`], [`separation_of_disjoint`], [`polyline_to_polygon`]) | our addition before section 3 on the disjoint-hull route: when both facing chains are monotone along the separating line, an exact windowed scan, thinned by depth across the line, answers within `96N + 1024` candidates (also on the separator's subproblems whose parts are monotone along their line); [`separation_of_disjoint_with`] with [`HullRouteMethod::Section3`] skips it | done; `O(N)`, section 3 when it declines (`docs/algorithms/separation-polygons.md`, "The monotone sweep") |
-//! | [`Route::Separators`] (inside [`separation`]) | section 2's separator `S(P, Q)` when the hulls meet: facing chains, the pockets of each wall that the other never enters cut off, the reduced region's triangulation, the geodesic, two-sided extensions, greedy pruning, report 001's subchains, then `σ(P_i, Q_i)` | done for the non-containing case, the pinched channel and the containing case (two passes over the annulus cut open, at its top and at its bottom, sharing their triangulated halves, each answering for the pairs whose `Q` point lies on its side of `P`'s top level), checked against properties (i)–(iv), (v) for vertices, monotone cuts and Lemma 1 (for every vertex–vertex sight on small cases) by an `O(N²)` checker; each subproblem goes to section 3 across its line (crossing end edges peeled, or at most 4 runs and 8 crossing edges per chain), otherwise it is scanned (`O(|P_i||Q_i|)`; large ones last, pruned by the best answer of all the others and by their distance to `l_i`); end edges deeper than the best answer so far are trimmed first and the scans skip pairs that cannot beat it, and the pairs the previous subproblem's scan took |
+//! | [`Route::Separators`] (inside [`separation`]) | section 2's separator `S(P, Q)` when the hulls meet: facing chains, the pockets of each wall that the other never enters cut off, the reduced region's triangulation, the geodesic, two-sided extensions, greedy pruning, report 001's subchains, then `σ(P_i, Q_i)` | done for the non-containing case, the pinched channel and the containing case (two passes over the annulus cut open, at its top and at its bottom, sharing their triangulated halves, each answering for the pairs whose `Q` point lies on its side of `P`'s top level), checked against properties (i)–(iv), (v) for vertices, monotone cuts and Lemma 1 (for every vertex–vertex sight on small cases) by an `O(N²)` checker; each subproblem goes to section 3 across its line (crossing end edges peeled, or pairs of runs when there are at most 4 runs and 8 crossing edges per chain, otherwise section 3 once per assignment of sides on the subchains clipped to the line: gapped chains, run last with the best answer of all the others as their cut); small ones (at most 256 vertex pairs) are scanned, and so is a subproblem section 3 rejects (only under the Fast kernel in our tests); end edges deeper than the best answer so far are trimmed first and the scans skip pairs that cannot beat it, and the pairs the previous subproblem's scan took |
 //! | [`triangulate`], [`shortest_path`], [`first_hit`], [`extensions`] | exact triangulation of a simple polygon with collinear vertices (`O(n log n)`), geodesics by the funnel, ray-shooting arms (one walk each, or every arm of a shortest-path tree in `O(n)`) | done (`docs/algorithms/triangulation.md`) |
 //! | [`point_to_polygon`], [`segment_to_polygon`] | a point or a segment against a simple polygon, `O(n)` | done |
 //! | [`polyline_to_polygon`] | an open simple polyline (a toolpath) against a simple polygon | done when the hulls are disjoint (section 3 on the open chain); hulls that meet are [`SeparationError::PolylineHullsMeet`] (the separator needs two polygons) |
 //! | lines touched by both chains | section 3 adds the nearest pair of vertices on the line (a sort) to the wedges' candidates | done (2026-11-26) |
-//! | a linear-time envelope, chains with gaps (runs ending at symbolic clip points) | — | **not done**: see `docs/algorithms/separation.md` and `docs/algorithms/separator.md` |
+//! | chains with gaps (Step G: runs clipped to a line, ending at symbolic clip points) | section 3 on two gapped chains inside the separator's subproblems: every predicate at a clip point decided exactly by `polydist_predicates::sign_at`, pairs with a clip point handed back as pairs of the crossing edge | done (2026-11-28), crate-internal; `O(n log k)` for `k` runs (the runs' envelopes merged in a balanced tree; a linear merge is not built): `docs/algorithms/separator.md`, "Step G" |
 //!
 //! Lemma 2 reduces general chains to the setting in which the paper states Lemmas 4–7: a chain
 //! monotone along the line (the envelope, with perpendicular jumps at shadow points).
@@ -72,6 +72,7 @@ mod cvv;
 mod envelope;
 mod error;
 mod frame;
+mod gapped;
 mod geodesic;
 mod monotone;
 mod param;
@@ -84,6 +85,7 @@ mod result;
 mod separator;
 mod sigma;
 mod simple_distance;
+mod site;
 mod spm;
 mod triangulate;
 mod wedge;
@@ -105,6 +107,7 @@ pub use polyline::polyline_to_polygon;
 pub use result::{ChainSeparation, ClosestPair, Cvv, CvvStats, SeparationStats};
 pub use sigma::separation_of_chains;
 pub use simple_distance::{BoundaryPoint, PointToPolygon, point_to_polygon, segment_to_polygon};
+pub use site::Vertex;
 pub use spm::{Extensions, extensions};
 pub use triangulate::{
     Neighbor, Triangulation, TriangulationError, triangulate, triangulate_brute,

@@ -16,55 +16,57 @@ use core::cmp::Ordering;
 use glam::DVec2;
 use polydist_predicates::{Kernel, Polynomial, Ring, Sign};
 
+use crate::site::Vertex;
+
 /// `g(x) = ±op(x − c, v1 − v0)` with `op` the cross (`cross == true`) or dot product: an affine
 /// function of the point `x` whose coefficients are input points. Degree 2 in the inputs.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) struct Affine {
+pub(crate) struct Affine<V = DVec2> {
     pub(crate) cross: bool,
-    pub(crate) c: DVec2,
-    pub(crate) v0: DVec2,
-    pub(crate) v1: DVec2,
+    pub(crate) c: V,
+    pub(crate) v0: V,
+    pub(crate) v1: V,
     /// Negate the value (roots are unchanged).
     pub(crate) neg: bool,
 }
 
-impl Affine {
+impl<V: Vertex> Affine<V> {
     /// `true` when both are the same function up to sign (hence have the same root): a structural
     /// shortcut that spares an exact evaluation of a polynomial that is identically zero.
-    fn same_root(&self, other: &Affine) -> bool {
+    fn same_root(&self, other: &Affine<V>) -> bool {
         self.cross == other.cross && self.c == other.c && self.v0 == other.v0 && self.v1 == other.v1
     }
 
     /// The form with the opposite sign.
-    pub(crate) fn negated(self) -> Affine {
+    pub(crate) fn negated(self) -> Affine<V> {
         Affine {
             neg: !self.neg,
             ..self
         }
     }
 
-    fn raw_at<K: Kernel>(&self, x: DVec2) -> Sign {
+    fn raw_at<K: Kernel>(&self, x: V) -> Sign {
         // Structural zeros (x − c = 0, v1 − v0 = 0, or x − c = v1 − v0 for a cross product) are
         // decided here: an exact zero is the one case the Robust filter cannot certify.
         if x == self.c || self.v0 == self.v1 || (self.cross && self.c == self.v0 && x == self.v1) {
             return Sign::Zero;
         }
         if self.cross {
-            K::cross_sign(self.c, x, self.v0, self.v1)
+            V::cross_sign::<K>(self.c, x, self.v0, self.v1)
         } else {
-            K::dot_sign(self.c, x, self.v0, self.v1)
+            V::dot_sign::<K>(self.c, x, self.v0, self.v1)
         }
     }
 
     /// `sign(g(a) − g(b))` without the negation: `op(a − b, v1 − v0)`.
-    fn raw_drop<K: Kernel>(&self, a: DVec2, b: DVec2) -> Sign {
+    fn raw_drop<K: Kernel>(&self, a: V, b: V) -> Sign {
         if a == b || self.v0 == self.v1 {
             return Sign::Zero;
         }
         if self.cross {
-            K::cross_sign(b, a, self.v0, self.v1)
+            V::cross_sign::<K>(b, a, self.v0, self.v1)
         } else {
-            K::dot_sign(b, a, self.v0, self.v1)
+            V::dot_sign::<K>(b, a, self.v0, self.v1)
         }
     }
 }
@@ -179,49 +181,33 @@ impl Polynomial<10> for EndSide {
     }
 }
 
-#[inline(always)]
-pub(crate) fn flat<const N: usize>(pts: &[DVec2]) -> [f64; N] {
-    core::array::from_fn(|i| {
-        if i % 2 == 0 {
-            pts[i / 2].x
-        } else {
-            pts[i / 2].y
-        }
-    })
-}
-
 /// A parameter on an edge `(a, b)`.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) enum Param {
+pub(crate) enum Param<V = DVec2> {
     /// `t = 0`, the edge's start `a`.
     Start,
     /// `t = 1`, the edge's end `b`.
     End,
     /// The root of the affine form (`f(a) ≠ f(b)`).
-    Root(Affine),
+    Root(Affine<V>),
     /// The lower (`hi == false`) or upper root of `F` for the tangent points `h`, `l`; always
     /// strictly inside the rational range of its piece `piece`.
-    Clip {
-        h: DVec2,
-        l: DVec2,
-        hi: bool,
-        piece: usize,
-    },
+    Clip { h: V, l: V, hi: bool, piece: usize },
 }
 
 /// A point of an edge `(a, b)` of one chain.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) struct EdgePoint {
+pub(crate) struct EdgePoint<V = DVec2> {
     /// The edge: from vertex `edge` to vertex `edge + 1` of the prepared chain.
     pub(crate) edge: usize,
-    pub(crate) param: Param,
+    pub(crate) param: Param<V>,
 }
 
 /// Exact geometry of one edge `(a, b)`.
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct Edge {
-    pub(crate) a: DVec2,
-    pub(crate) b: DVec2,
+pub(crate) struct Edge<V = DVec2> {
+    pub(crate) a: V,
+    pub(crate) b: V,
 }
 
 /// `16u = 2⁻⁴⁹`: [`root_pair_filter`]'s error constant.
@@ -270,31 +256,56 @@ fn root_pair_filter(a: DVec2, b: DVec2, f: &Affine, g: &Affine) -> Option<Sign> 
     (r.abs() > ROOT_PAIR_ERR * m).then(|| Sign::of_f64(r))
 }
 
-impl Edge {
-    /// `sign(f(a)g(b) − f(b)g(a))` (raw forms). Under the exact kernels [`root_pair_filter`] first.
-    fn root_pair<K: Kernel>(&self, f: &Affine, g: &Affine) -> Sign {
-        if K::EXACT_DECISIONS {
-            if let Some(s) = root_pair_filter(self.a, self.b, f, g) {
+/// The edge and the two forms with input points, when every point is one.
+#[inline(always)]
+fn input_affines<V: Vertex>(
+    e: &Edge<V>,
+    f: &Affine<V>,
+    g: &Affine<V>,
+) -> Option<(Edge, Affine, Affine)> {
+    let form = |h: &Affine<V>| {
+        Some(Affine {
+            cross: h.cross,
+            c: h.c.as_input()?,
+            v0: h.v0.as_input()?,
+            v1: h.v1.as_input()?,
+            neg: h.neg,
+        })
+    };
+    let edge = Edge {
+        a: e.a.as_input()?,
+        b: e.b.as_input()?,
+    };
+    Some((edge, form(f)?, form(g)?))
+}
+
+impl<V: Vertex> Edge<V> {
+    /// `sign(f(a)g(b) − f(b)g(a))` (raw forms). Under the exact kernels [`root_pair_filter`] first
+    /// (on input points).
+    fn root_pair<K: Kernel>(&self, f: &Affine<V>, g: &Affine<V>) -> Sign {
+        if K::EXACT_DECISIONS && V::INPUT {
+            if let Some(s) =
+                input_affines(self, f, g).and_then(|(e, f, g)| root_pair_filter(e.a, e.b, &f, &g))
+            {
                 return s;
             }
         }
-        let x: [f64; 16] = flat(&[self.a, self.b, f.c, f.v0, f.v1, g.c, g.v0, g.v1]);
-        K::sign(
+        V::sign::<K, _, 16, 8, 64>(
             &RootPair {
                 f_cross: f.cross,
                 g_cross: g.cross,
             },
-            &x,
+            [self.a, self.b, f.c, f.v0, f.v1, g.c, g.v0, g.v1],
         )
     }
 
     /// Where the root of `g` lies relative to the roots `r1 ≤ r2` of `F` for `(h, l)`, which must
     /// exist (`B² − 4AC ≥ 0`): the orders `(root vs r1, root vs r2)`.
-    fn against_arc<K: Kernel>(&self, g: &Affine, h: DVec2, l: DVec2) -> (Ordering, Ordering) {
-        let x: [f64; 14] = flat(&[self.a, self.b, h, l, g.c, g.v0, g.v1]);
-        let fv = K::sign(&QuadAtRoot { g_cross: g.cross }, &x);
+    fn against_arc<K: Kernel>(&self, g: &Affine<V>, h: V, l: V) -> (Ordering, Ordering) {
+        let x = [self.a, self.b, h, l, g.c, g.v0, g.v1];
+        let fv = V::sign::<K, _, 14, 7, 56>(&QuadAtRoot { g_cross: g.cross }, x);
         // sign(root − vertex) = sign(2AN + BD) · sign(D).
-        let side = K::sign(&VertexSide { g_cross: g.cross }, &x);
+        let side = V::sign::<K, _, 14, 7, 56>(&VertexSide { g_cross: g.cross }, x);
         let d = g.raw_drop::<K>(self.a, self.b);
         let vs = if d == Sign::Negative {
             side.reversed()
@@ -307,7 +318,7 @@ impl Edge {
     /// [`Self::against_arc`], but a root that is exactly an edge end is placed by the degree-2 end
     /// test: at an end that is also a tangent point, `F` vanishes exactly there and the degree-6
     /// test would need exact arithmetic.
-    fn root_against_arc<K: Kernel>(&self, g: &Affine, h: DVec2, l: DVec2) -> (Ordering, Ordering) {
+    fn root_against_arc<K: Kernel>(&self, g: &Affine<V>, h: V, l: V) -> (Ordering, Ordering) {
         if g.raw_at::<K>(self.a) == Sign::Zero {
             self.end_against_arc::<K>(false, h, l)
         } else if g.raw_at::<K>(self.b) == Sign::Zero {
@@ -318,7 +329,7 @@ impl Edge {
     }
 
     /// [`Self::against_arc`] for the edge's start (`at_end == false`) or end.
-    fn end_against_arc<K: Kernel>(&self, at_end: bool, h: DVec2, l: DVec2) -> (Ordering, Ordering) {
+    fn end_against_arc<K: Kernel>(&self, at_end: bool, h: V, l: V) -> (Ordering, Ordering) {
         let x = if at_end { self.b } else { self.a };
         // F(x) = (h − x)·(l − x); the side of the vertex: sign(B) at a, sign(2A + B) at b.
         // At a tangent point (`x` is `h` or `l`, the rule on a star's spikes) `F(x)` is exactly zero:
@@ -327,9 +338,9 @@ impl Edge {
         let fv = if x == h || x == l {
             Sign::Zero
         } else {
-            K::dot_sign(x, h, x, l)
+            V::dot_sign::<K>(x, h, x, l)
         };
-        let vs = K::sign(&EndSide, &flat::<10>(&[x, h, l, self.a, self.b]));
+        let vs = V::sign::<K, _, 10, 5, 40>(&EndSide, [x, h, l, self.a, self.b]);
         arc_position(fv, vs)
     }
 }
@@ -348,14 +359,14 @@ fn arc_position(fv: Sign, vs: Sign) -> (Ordering, Ordering) {
     }
 }
 
-impl Edge {
+impl<V: Vertex> Edge<V> {
     /// `sign(B² − 4AC)` for the tangent points `(h, l)`.
-    pub(crate) fn disc<K: Kernel>(&self, h: DVec2, l: DVec2) -> Sign {
-        K::sign(&Disc, &flat::<8>(&[self.a, self.b, h, l]))
+    pub(crate) fn disc<K: Kernel>(&self, h: V, l: V) -> Sign {
+        V::sign::<K, _, 8, 4, 32>(&Disc, [self.a, self.b, h, l])
     }
 
     /// `sign(g(x))` at the point with parameter `t` on this edge.
-    pub(crate) fn eval<K: Kernel>(&self, g: &Affine, t: &Param) -> Sign {
+    pub(crate) fn eval<K: Kernel>(&self, g: &Affine<V>, t: &Param<V>) -> Sign {
         let raw = match t {
             Param::Start => g.raw_at::<K>(self.a),
             Param::End => g.raw_at::<K>(self.b),
@@ -390,7 +401,7 @@ impl Edge {
     /// `g` has one strict sign at both ends it has that sign on the whole edge (it is affine), so a
     /// root or an arc end is placed by two degree-2 signs instead of the degree-4 root comparison or
     /// the degree-6 arc placement.
-    pub(crate) fn eval_within<K: Kernel>(&self, g: &Affine, t: &Param) -> Sign {
+    pub(crate) fn eval_within<K: Kernel>(&self, g: &Affine<V>, t: &Param<V>) -> Sign {
         let placed = match t {
             Param::Root(f) => !f.same_root(g),
             Param::Clip { .. } => true,
@@ -410,9 +421,9 @@ impl Edge {
     /// at both ends of a piece).
     pub(crate) fn eval_pair_within<K: Kernel>(
         &self,
-        g: &Affine,
-        s: &Param,
-        t: &Param,
+        g: &Affine<V>,
+        s: &Param<V>,
+        t: &Param<V>,
     ) -> (Sign, Sign) {
         let ends = (g.raw_at::<K>(self.a), g.raw_at::<K>(self.b));
         (
@@ -423,7 +434,12 @@ impl Edge {
 
     /// [`Self::eval`] at a parameter of the closed edge, given `g`'s raw signs at the edge's ends:
     /// the one place of the rule that a strict sign shared by both ends holds on the whole edge.
-    fn eval_given_ends<K: Kernel>(&self, g: &Affine, t: &Param, (ga, gb): (Sign, Sign)) -> Sign {
+    fn eval_given_ends<K: Kernel>(
+        &self,
+        g: &Affine<V>,
+        t: &Param<V>,
+        (ga, gb): (Sign, Sign),
+    ) -> Sign {
         let raw = match t {
             Param::Start => ga,
             Param::End => gb,
@@ -437,7 +453,7 @@ impl Edge {
 
     /// `sign(root_f − e)` for the edge end `e` (start: `t = 0`, end: `t = 1`): `sign(f(e)) ·
     /// sign(f(a) − f(b))`, negated for the start (degree 2).
-    fn root_vs_end<K: Kernel>(&self, f: &Affine, at_end: bool) -> Ordering {
+    fn root_vs_end<K: Kernel>(&self, f: &Affine<V>, at_end: bool) -> Ordering {
         let fe = f.raw_at::<K>(if at_end { self.b } else { self.a });
         let d = f.raw_drop::<K>(self.a, self.b);
         // root − 0 = f(a)/D; root − 1 = f(b)/D.
@@ -450,7 +466,7 @@ impl Edge {
     }
 
     /// Compares two parameters on this edge (`Less`: `s` nearer to `a`).
-    pub(crate) fn cmp<K: Kernel>(&self, s: &Param, t: &Param) -> Ordering {
+    pub(crate) fn cmp<K: Kernel>(&self, s: &Param<V>, t: &Param<V>) -> Ordering {
         use Param::{Clip, End, Root, Start};
         match (s, t) {
             (Start, Start) | (End, End) => Ordering::Equal,
@@ -506,9 +522,9 @@ impl Edge {
     /// orders from one placement, where two [`Self::cmp`] calls would place `t` twice.
     pub(crate) fn against_arc_ends<K: Kernel>(
         &self,
-        t: &Param,
-        h: DVec2,
-        l: DVec2,
+        t: &Param<V>,
+        h: V,
+        l: V,
         piece: usize,
     ) -> (Ordering, Ordering) {
         match t {
@@ -523,7 +539,7 @@ impl Edge {
     }
 
     /// `true` when `t` is exactly the start (`at_end == false`) or the end of the edge.
-    pub(crate) fn is_end<K: Kernel>(&self, t: &Param, at_end: bool) -> bool {
+    pub(crate) fn is_end<K: Kernel>(&self, t: &Param<V>, at_end: bool) -> bool {
         match t {
             Param::Start => !at_end,
             Param::End => at_end,
@@ -538,6 +554,16 @@ mod tests {
     use super::*;
     use polydist_oracle::SplitMix64;
     use polydist_polygon::predicates::Exact;
+
+    fn flat<const N: usize>(pts: &[DVec2]) -> [f64; N] {
+        core::array::from_fn(|i| {
+            if i % 2 == 0 {
+                pts[i / 2].x
+            } else {
+                pts[i / 2].y
+            }
+        })
+    }
 
     /// The static filter of [`RootPair`] never disagrees with the exact sign, and certifies most
     /// calls: on random forms over points of every scale, on lattice points (exact zeros and near

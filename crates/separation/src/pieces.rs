@@ -10,30 +10,31 @@ use polydist_predicates::{Kernel, Sign};
 use crate::chain::Prepared;
 use crate::frame::Frame;
 use crate::param::{Affine, Edge, Param};
+use crate::site::Vertex;
 
 /// A piece of edge `edge` (from prepared vertex `edge` to `edge + 1`), from `bot` to `top`, with
 /// constant tangent points `hi = h(x)` and `lo = l(x)` (`None`: the ray is parallel to the line)
 /// and `α(x) ≥ 90°` on all of it.
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct Piece {
+pub(crate) struct Piece<V = DVec2> {
     pub(crate) edge: usize,
-    pub(crate) bot: Param,
-    pub(crate) top: Param,
-    pub(crate) hi: Option<DVec2>,
-    pub(crate) lo: Option<DVec2>,
+    pub(crate) bot: Param<V>,
+    pub(crate) top: Param<V>,
+    pub(crate) hi: Option<V>,
+    pub(crate) lo: Option<V>,
 }
 
 /// One interval of an edge with one tangent point.
 #[derive(Clone, Copy, Debug)]
-struct Span {
-    bot: Param,
-    top: Param,
-    tangent: Option<DVec2>,
+struct Span<V = DVec2> {
+    bot: Param<V>,
+    top: Param<V>,
+    tangent: Option<V>,
 }
 
 /// The orientation form whose root on an edge is where the hull pair `(c, c')` stops or starts
 /// being popped: `x ↦ orient(x, c, c')`.
-fn pair_form(c: DVec2, c2: DVec2) -> Affine {
+fn pair_form<V: Vertex>(c: V, c2: V) -> Affine<V> {
     Affine {
         cross: true,
         c,
@@ -46,11 +47,11 @@ fn pair_form(c: DVec2, c2: DVec2) -> Affine {
 /// Splits `spans` (with tangent candidates, ascending) where the tangent stops being strictly
 /// nearer to the line than the point: `h(x) = t` only where `depth(t) < depth(x)`. Appends the
 /// result to `out`.
-fn depth_rule<K: Kernel>(
-    e: &Edge,
+fn depth_rule<K: Kernel, V: Vertex>(
+    e: &Edge<V>,
     frame: Frame,
-    spans: impl Iterator<Item = Span>,
-    out: &mut Vec<Span>,
+    spans: impl Iterator<Item = Span<V>>,
+    out: &mut Vec<Span<V>>,
 ) {
     for s in spans {
         let Some(t) = s.tangent else {
@@ -98,7 +99,7 @@ fn depth_rule<K: Kernel>(
 /// The top-to-bottom scan stores every edge's upper spans back to back in one array; the
 /// bottom-to-top scan merges each edge's lower spans with them as soon as they are known (edges
 /// in increasing order, as the pieces are numbered), in reused scratch space.
-pub(crate) fn pieces<K: Kernel>(prep: &Prepared, frame: Frame) -> Vec<Piece> {
+pub(crate) fn pieces<K: Kernel, V: Vertex>(prep: &Prepared<V>, frame: Frame) -> Vec<Piece<V>> {
     let pts = &prep.pts[..];
     let n = pts.len();
     if n < 2 {
@@ -106,26 +107,23 @@ pub(crate) fn pieces<K: Kernel>(prep: &Prepared, frame: Frame) -> Vec<Piece> {
     }
     // The real edges; an end may be a vertex hidden behind the nearest vertex of a run at its
     // height (an edge perpendicular to the line).
-    let edge = |k: usize| {
-        let (a, b, _, _) = prep.edge(k);
-        Edge { a, b }
-    };
+    // (`None` at a gap between the runs of a clipped chain: no edge, no pieces.)
+    let edge = |k: usize| prep.edge(k).map(|(a, b, _, _)| Edge { a, b });
     // The part of each edge on the envelope: a shadow point or hidden run vertex at either end is
     // at the height of the visible vertex and deeper.
-    let range = |k: usize| (prep.edges[k].lo, prep.edges[k].hi);
+    let range = |k: usize| prep.edges[k].as_ref().map(|r| (r.lo, r.hi));
     // Upper spans per edge (ascending), from the top-to-bottom scan: edge `k`'s are
     // `upper[upper_at[k].0..upper_at[k].1]`. For the edge below vertex i, the hull pairs popped at
     // its bottom end are walked before vertex i pops: when that end is a hidden run vertex (deeper
     // than `pts[i]` at the same height) they are a prefix of the pairs `pts[i]` pops (a pair pops
     // for points on its line's side toward `l`), so the walk is amortized.
-    let mut upper: Vec<Span> = Vec::with_capacity(2 * n);
+    let mut upper: Vec<Span<V>> = Vec::with_capacity(2 * n);
     let mut upper_at: Vec<(usize, usize)> = vec![(0, 0); n - 1];
-    let mut scratch: Vec<Span> = Vec::new();
+    let mut scratch: Vec<Span<V>> = Vec::new();
     let mut stack: Vec<usize> = Vec::with_capacity(n);
     for i in (0..n).rev() {
-        if i + 1 < n {
-            let e = &edge(i);
-            let (lo, hi) = range(i);
+        if let Some((Some(e), Some((lo, hi)))) = (i + 1 < n).then(|| (edge(i), range(i))) {
+            let e = &e;
             scratch.clear();
             let mut top = hi;
             let mut cur = stack.last().map(|&c| pts[c]);
@@ -160,12 +158,12 @@ pub(crate) fn pieces<K: Kernel>(prep: &Prepared, frame: Frame) -> Vec<Piece> {
             });
             // `scratch` is descending.
             let start = upper.len();
-            depth_rule::<K>(e, frame, scratch.iter().rev().copied(), &mut upper);
+            depth_rule::<K, V>(e, frame, scratch.iter().rev().copied(), &mut upper);
             upper_at[i] = (start, upper.len());
         }
         let p = pts[i];
         while let [.., c2, c1] = stack[..] {
-            if frame.orient::<K>(p, pts[c1], pts[c2]) == Sign::Negative {
+            if frame.orient::<K, _>(p, pts[c1], pts[c2]) == Sign::Negative {
                 break;
             }
             stack.pop();
@@ -174,15 +172,14 @@ pub(crate) fn pieces<K: Kernel>(prep: &Prepared, frame: Frame) -> Vec<Piece> {
     }
     // Lower spans per edge (ascending), from the bottom-to-top scan (the mirror image), each merged
     // with the edge's upper spans and clipped at once.
-    let mut lower: Vec<Span> = Vec::new();
+    let mut lower: Vec<Span<V>> = Vec::new();
     // Typically about one piece per edge.
-    let mut out: Vec<Piece> = Vec::with_capacity(n - 1);
+    let mut out: Vec<Piece<V>> = Vec::with_capacity(n - 1);
     stack.clear();
     for i in 0..n {
-        if i >= 1 {
-            let k = i - 1;
-            let e = &edge(k);
-            let (lo, hi) = range(k);
+        if let Some((k, Some(e), Some((lo, hi)))) = i.checked_sub(1).map(|k| (k, edge(k), range(k)))
+        {
+            let e = &e;
             scratch.clear();
             let mut bot = lo;
             let mut cur = stack.last().map(|&d| pts[d]);
@@ -216,13 +213,13 @@ pub(crate) fn pieces<K: Kernel>(prep: &Prepared, frame: Frame) -> Vec<Piece> {
                 tangent: cur,
             });
             lower.clear();
-            depth_rule::<K>(e, frame, scratch.iter().copied(), &mut lower);
+            depth_rule::<K, V>(e, frame, scratch.iter().copied(), &mut lower);
             let (u0, u1) = upper_at[k];
-            merge_and_clip::<K>(&mut out, k, e, (lo, hi), &upper[u0..u1], &lower);
+            merge_and_clip::<K, V>(&mut out, k, e, (lo, hi), &upper[u0..u1], &lower);
         }
         let p = pts[i];
         while let [.., d2, d1] = stack[..] {
-            if frame.orient::<K>(p, pts[d1], pts[d2]) == Sign::Positive {
+            if frame.orient::<K, _>(p, pts[d1], pts[d2]) == Sign::Positive {
                 break;
             }
             stack.pop();
@@ -234,13 +231,13 @@ pub(crate) fn pieces<K: Kernel>(prep: &Prepared, frame: Frame) -> Vec<Piece> {
 
 /// Merges the upper spans `us` and lower spans `ls` of edge `k` (each ascending, covering `range`)
 /// into the pieces where both tangents are constant, clipped and pushed.
-fn merge_and_clip<K: Kernel>(
-    out: &mut Vec<Piece>,
+fn merge_and_clip<K: Kernel, V: Vertex>(
+    out: &mut Vec<Piece<V>>,
     k: usize,
-    e: &Edge,
-    range: (Param, Param),
-    us: &[Span],
-    ls: &[Span],
+    e: &Edge<V>,
+    range: (Param<V>, Param<V>),
+    us: &[Span<V>],
+    ls: &[Span<V>],
 ) {
     let (mut iu, mut il) = (0, 0);
     let mut bot = range.0;
@@ -250,7 +247,7 @@ fn merge_and_clip<K: Kernel>(
         let o = e.cmp::<K>(&tu, &tl);
         let top = if o == Ordering::Greater { tl } else { tu };
         if e.cmp::<K>(&bot, &top) == Ordering::Less {
-            clip_and_push::<K>(
+            clip_and_push::<K, V>(
                 out,
                 k,
                 e,
@@ -270,13 +267,13 @@ fn merge_and_clip<K: Kernel>(
 }
 
 /// Clips the piece `[bot, top]` of edge `k` to the arc `F ≤ 0` and pushes what is left.
-fn clip_and_push<K: Kernel>(
-    out: &mut Vec<Piece>,
+fn clip_and_push<K: Kernel, V: Vertex>(
+    out: &mut Vec<Piece<V>>,
     k: usize,
-    e: &Edge,
-    range: (Param, Param),
-    (bot, top): (Param, Param),
-    (hi, lo): (Option<DVec2>, Option<DVec2>),
+    e: &Edge<V>,
+    range: (Param<V>, Param<V>),
+    (bot, top): (Param<V>, Param<V>),
+    (hi, lo): (Option<V>, Option<V>),
 ) {
     let piece = out.len();
     let (Some(h), Some(l)) = (hi, lo) else {
@@ -290,8 +287,8 @@ fn clip_and_push<K: Kernel>(
         return;
     };
     let clipped = match end_tangent(e, h, l) {
-        Some((v_is_b, w)) => clip_from_end::<K>(e, (bot, top), v_is_b, w),
-        None => clip_to_arc::<K>(e, (bot, top), h, l, piece),
+        Some((v_is_b, w)) => clip_from_end::<K, V>(e, (bot, top), v_is_b, w),
+        None => clip_to_arc::<K, V>(e, (bot, top), h, l, piece),
     };
     let Some((new_bot, new_top)) = clipped else {
         return;
@@ -320,7 +317,7 @@ fn clip_and_push<K: Kernel>(
 
 /// A tangent point at an end `v` of the edge (on a convex corner of the envelope, the rule): whether
 /// `v` is the edge's end `b`, and the other tangent point `w`.
-fn end_tangent(e: &Edge, h: DVec2, l: DVec2) -> Option<(bool, DVec2)> {
+fn end_tangent<V: Vertex>(e: &Edge<V>, h: V, l: V) -> Option<(bool, V)> {
     [(h, l), (l, h)].into_iter().find_map(|(z, w)| {
         (z == e.a)
             .then_some((false, w))
@@ -334,12 +331,12 @@ fn end_tangent(e: &Edge, h: DVec2, l: DVec2) -> Option<(bool, DVec2)> {
 /// of `g` (degree 2) instead of an irrational arc end (the degree-6 placements and the
 /// discriminant, which the star in a pocket drove into the exact stage at 131,072 vertices). `None`
 /// when only `v` itself (a vertex, a CVV candidate) or nothing is left.
-fn clip_from_end<K: Kernel>(
-    e: &Edge,
-    (bot, top): (Param, Param),
+fn clip_from_end<K: Kernel, V: Vertex>(
+    e: &Edge<V>,
+    (bot, top): (Param<V>, Param<V>),
     v_is_b: bool,
-    w: DVec2,
-) -> Option<(Param, Param)> {
+    w: V,
+) -> Option<(Param<V>, Param<V>)> {
     let (v, other) = if v_is_b { (e.b, e.a) } else { (e.a, e.b) };
     let g = Affine {
         cross: false,
@@ -364,17 +361,17 @@ fn clip_from_end<K: Kernel>(
 /// [`clip_and_push`] in general: the piece clipped to `[r_1, r_2]`, the roots of `F` for `(h, l)`
 /// kept symbolic (`Param::Clip` of piece `piece`); `None` when the discriminant is negative or the
 /// piece misses the arc.
-fn clip_to_arc<K: Kernel>(
-    e: &Edge,
-    (bot, top): (Param, Param),
-    h: DVec2,
-    l: DVec2,
+fn clip_to_arc<K: Kernel, V: Vertex>(
+    e: &Edge<V>,
+    (bot, top): (Param<V>, Param<V>),
+    h: V,
+    l: V,
     piece: usize,
-) -> Option<(Param, Param)> {
+) -> Option<(Param<V>, Param<V>)> {
     if e.disc::<K>(h, l) == Sign::Negative {
         return None; // α < 90° on the whole line of the edge
     }
-    let arc = |t: &Param| e.against_arc_ends::<K>(t, h, l, piece);
+    let arc = |t: &Param<V>| e.against_arc_ends::<K>(t, h, l, piece);
     let (b1, b2) = arc(&bot);
     let (t1, t2) = arc(&top);
     if b2 == Ordering::Greater || t1 == Ordering::Less {
@@ -469,8 +466,8 @@ mod tests {
         for n in [2usize, 3, 5, 9, 16, 30] {
             for _ in 0..200 {
                 let pts = chain(&mut rng, n);
-                let prep = Prepared::from_rising(&pts);
-                let ps = pieces::<Exact>(&prep, P);
+                let prep = Prepared::<DVec2>::from_rising(&pts);
+                let ps = pieces::<Exact, _>(&prep, P);
                 // Pieces are in order along the chain and well formed.
                 for w in ps.windows(2) {
                     assert!(w[0].edge <= w[1].edge);
@@ -561,24 +558,24 @@ mod tests {
                     let (s0, len) = (rng.index(n), 1 + rng.index(n));
                     (0..len).map(|t| poly[(s0 + t) % n]).collect()
                 };
-                let prep = prepare::<Exact>(&chain, P, Chain::P).unwrap();
+                let prep = prepare::<Exact, _>(&chain, P, Chain::P).unwrap();
                 let pts = &prep.pts;
-                let ps = pieces::<Exact>(&prep, P);
+                let ps = pieces::<Exact, _>(&prep, P);
                 for w in ps.windows(2) {
                     assert!(w[0].edge <= w[1].edge);
                 }
                 let edge = |k: usize| {
-                    let (a, b, _, _) = prep.edge(k);
+                    let (a, b, _, _) = prep.edge(k).unwrap();
                     Edge { a, b }
                 };
                 for k in 0..prep.edges.len() {
-                    let r = &prep.edges[k];
+                    let r = prep.edges[k].as_ref().unwrap();
                     shadows += usize::from(matches!(r.lo, Param::Root(_)))
                         + usize::from(matches!(r.hi, Param::Root(_)));
                 }
                 for pc in &ps {
                     let e = edge(pc.edge);
-                    let r = &prep.edges[pc.edge];
+                    let r = prep.edges[pc.edge].as_ref().unwrap();
                     assert_ne!(e.cmp::<Exact>(&pc.bot, &pc.top), Ordering::Greater);
                     assert_ne!(e.cmp::<Exact>(&r.lo, &pc.bot), Ordering::Greater);
                     assert_ne!(e.cmp::<Exact>(&pc.top, &r.hi), Ordering::Greater);
@@ -608,7 +605,7 @@ mod tests {
                 // Every sampled envelope point with α clearly ≥ 90° lies in some piece.
                 for k in 0..prep.edges.len() {
                     let e = edge(k);
-                    let r = &prep.edges[k];
+                    let r = prep.edges[k].as_ref().unwrap();
                     let (t0, t1) = (approx(&e, &r.lo), approx(&e, &r.hi));
                     for s in 1..32 {
                         let t = ((t0 + (t1 - t0) * s as f64 / 32.0) * 1024.0).round() / 1024.0;

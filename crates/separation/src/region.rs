@@ -8,14 +8,15 @@ use glam::DVec2;
 use polydist_predicates::Kernel;
 
 use crate::frame::Frame;
+use crate::site::Vertex;
 use crate::wedge::{Apex, in_wedge};
 
 /// `R(b)` for a vertex `b` of one chain: the vertices `u^+`, `u^-` of the other chain (`None`: the
 /// boundary is the perpendicular to the line through `b` itself, the text's `u = b^l`).
-#[derive(Clone, Copy, Debug, Default)]
-pub(crate) struct Region {
-    pub(crate) up: Option<DVec2>,
-    pub(crate) down: Option<DVec2>,
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Region<V = DVec2> {
+    pub(crate) up: Option<V>,
+    pub(crate) down: Option<V>,
 }
 
 /// Where a point lies relative to a region.
@@ -34,15 +35,27 @@ pub(crate) enum Place {
 /// symmetrically. The pointer into `us` only moves down during the first scan (up during the
 /// second), except for one step back per `b_j` to readmit the single `u` at exactly the height of
 /// the new cap: at most `2(n_u + n_b)` candidate tests, each two wedge tests.
-pub(crate) fn regions<K: Kernel>(bs: &[Apex], fb: Frame, us: &[Apex], fu: Frame) -> Vec<Region> {
-    let mut out = vec![Region::default(); bs.len()];
-    let admissible = |b: &Apex, u: &Apex| in_wedge::<K>(fb, b, u.pt) && in_wedge::<K>(fu, u, b.pt);
+pub(crate) fn regions<K: Kernel, V: Vertex>(
+    bs: &[Apex<V>],
+    fb: Frame,
+    us: &[Apex<V>],
+    fu: Frame,
+) -> Vec<Region<V>> {
+    let mut out = vec![
+        Region {
+            up: None,
+            down: None
+        };
+        bs.len()
+    ];
+    let admissible =
+        |b: &Apex<V>, u: &Apex<V>| in_wedge::<K, _>(fb, b, u.pt) && in_wedge::<K, _>(fu, u, b.pt);
     // Top-to-bottom: u^+.
     let mut k = us.len(); // candidates are us[..k]
     for (j, b) in bs.iter().enumerate().rev() {
         while k > 0 {
             let u = &us[k - 1];
-            if fb.cmp_height::<K>(u.pt, b.pt) == Ordering::Less {
+            if fb.cmp_height::<K, _>(u.pt, b.pt) == Ordering::Less {
                 break;
             }
             if admissible(b, u) {
@@ -53,7 +66,7 @@ pub(crate) fn regions<K: Kernel>(bs: &[Apex], fb: Frame, us: &[Apex], fu: Frame)
         }
         if out[j].up.is_none()
             && k < us.len()
-            && fb.cmp_height::<K>(us[k].pt, b.pt) == Ordering::Equal
+            && fb.cmp_height::<K, _>(us[k].pt, b.pt) == Ordering::Equal
         {
             k += 1; // the cap is now H(b): the one u at exactly that height is a candidate again
         }
@@ -63,7 +76,7 @@ pub(crate) fn regions<K: Kernel>(bs: &[Apex], fb: Frame, us: &[Apex], fu: Frame)
     for (j, b) in bs.iter().enumerate() {
         while k < us.len() {
             let u = &us[k];
-            if fb.cmp_height::<K>(u.pt, b.pt) == Ordering::Greater {
+            if fb.cmp_height::<K, _>(u.pt, b.pt) == Ordering::Greater {
                 break;
             }
             if admissible(b, u) {
@@ -74,7 +87,7 @@ pub(crate) fn regions<K: Kernel>(bs: &[Apex], fb: Frame, us: &[Apex], fu: Frame)
         }
         if out[j].down.is_none()
             && k > 0
-            && fb.cmp_height::<K>(us[k - 1].pt, b.pt) == Ordering::Equal
+            && fb.cmp_height::<K, _>(us[k - 1].pt, b.pt) == Ordering::Equal
         {
             k -= 1;
         }
@@ -94,10 +107,10 @@ pub(crate) fn regions<K: Kernel>(bs: &[Apex], fb: Frame, us: &[Apex], fu: Frame)
 /// (at least as deep: by the ray; nearer: strictly left of `b → u^+`, a sign read off the
 /// coordinates). The apexes have strictly increasing heights, so no `z` other than `u^+` is at its
 /// height. The same holds for `u^-` below. `band_is_the_literal_region` checks it.
-pub(crate) fn band<K: Kernel>(fu: Frame, b: DVec2, r: &Region, z: DVec2) -> Place {
-    if fu.cmp_height::<K>(z, r.up.unwrap_or(b)) == Ordering::Greater {
+pub(crate) fn band<K: Kernel, V: Vertex>(fu: Frame, b: V, r: &Region<V>, z: V) -> Place {
+    if fu.cmp_height::<K, _>(z, r.up.unwrap_or(b)) == Ordering::Greater {
         Place::Above
-    } else if fu.cmp_height::<K>(z, r.down.unwrap_or(b)) == Ordering::Less {
+    } else if fu.cmp_height::<K, _>(z, r.down.unwrap_or(b)) == Ordering::Less {
         Place::Below
     } else {
         Place::Inside
@@ -122,20 +135,21 @@ mod tests {
     /// nearer to the line than `u^+` and strictly left of `b → u^+` (in the frame of `z`'s side). The
     /// region is closed. At most three degree-2 tests per boundary. The test twin of [`band`].
     fn place<K: Kernel>(fu: Frame, b: DVec2, r: &Region, z: DVec2) -> Place {
-        let beyond = |u: DVec2, side: Ordering, orient_side: Sign| match cmp_depth::<K>(fu, z, u) {
-            Ordering::Less => fu.orient::<K>(b, u, z) == orient_side,
-            _ => fu.cmp_height::<K>(z, u) == side,
+        let beyond = |u: DVec2, side: Ordering, orient_side: Sign| match cmp_depth::<K, _>(fu, z, u)
+        {
+            Ordering::Less => fu.orient::<K, _>(b, u, z) == orient_side,
+            _ => fu.cmp_height::<K, _>(z, u) == side,
         };
         let above = match r.up {
             Some(u) => beyond(u, Ordering::Greater, Sign::Positive),
-            None => fu.cmp_height::<K>(z, b) == Ordering::Greater,
+            None => fu.cmp_height::<K, _>(z, b) == Ordering::Greater,
         };
         if above {
             return Place::Above;
         }
         let below = match r.down {
             Some(u) => beyond(u, Ordering::Less, Sign::Negative),
-            None => fu.cmp_height::<K>(z, b) == Ordering::Less,
+            None => fu.cmp_height::<K, _>(z, b) == Ordering::Less,
         };
         if below { Place::Below } else { Place::Inside }
     }
@@ -151,8 +165,8 @@ mod tests {
 
     /// Both chains' apexes (the envelope's vertices after Lemma 3), as `CvvMatrix` builds them.
     fn apexes_of(p: &[DVec2], q: &[DVec2], f: Frames) -> (Vec<Apex>, Vec<Apex>) {
-        let pa = apexes::<Exact>(&prepare::<Exact>(p, f.p, Chain::P).unwrap(), f.p);
-        let qa = apexes::<Exact>(&prepare::<Exact>(q, f.q, Chain::Q).unwrap(), f.q);
+        let pa = apexes::<Exact, _>(&prepare::<Exact, _>(p, f.p, Chain::P).unwrap(), f.p);
+        let qa = apexes::<Exact, _>(&prepare::<Exact, _>(q, f.q, Chain::Q).unwrap(), f.q);
         (pa, qa)
     }
 
@@ -164,12 +178,12 @@ mod tests {
         for (j, b) in bs.iter().enumerate().rev() {
             let best = us
                 .iter()
-                .filter(|u| fb.cmp_height::<Exact>(u.pt, b.pt) != Ordering::Less)
+                .filter(|u| fb.cmp_height::<Exact, _>(u.pt, b.pt) != Ordering::Less)
                 .filter(|u| {
-                    cap.is_none_or(|c| fb.cmp_height::<Exact>(u.pt, c) != Ordering::Greater)
+                    cap.is_none_or(|c| fb.cmp_height::<Exact, _>(u.pt, c) != Ordering::Greater)
                 })
-                .filter(|u| in_wedge::<Exact>(fb, b, u.pt) && in_wedge::<Exact>(fu, u, b.pt))
-                .max_by(|x, y| fb.cmp_height::<Exact>(x.pt, y.pt));
+                .filter(|u| in_wedge::<Exact, _>(fb, b, u.pt) && in_wedge::<Exact, _>(fu, u, b.pt))
+                .max_by(|x, y| fb.cmp_height::<Exact, _>(x.pt, y.pt));
             out[j] = best.map(|u| u.pt);
             cap = Some(best.map_or(b.pt, |u| u.pt));
         }
@@ -182,10 +196,12 @@ mod tests {
         for (j, b) in bs.iter().enumerate() {
             let best = us
                 .iter()
-                .filter(|u| fb.cmp_height::<Exact>(u.pt, b.pt) != Ordering::Greater)
-                .filter(|u| cap.is_none_or(|c| fb.cmp_height::<Exact>(u.pt, c) != Ordering::Less))
-                .filter(|u| in_wedge::<Exact>(fb, b, u.pt) && in_wedge::<Exact>(fu, u, b.pt))
-                .min_by(|x, y| fb.cmp_height::<Exact>(x.pt, y.pt));
+                .filter(|u| fb.cmp_height::<Exact, _>(u.pt, b.pt) != Ordering::Greater)
+                .filter(|u| {
+                    cap.is_none_or(|c| fb.cmp_height::<Exact, _>(u.pt, c) != Ordering::Less)
+                })
+                .filter(|u| in_wedge::<Exact, _>(fb, b, u.pt) && in_wedge::<Exact, _>(fu, u, b.pt))
+                .min_by(|x, y| fb.cmp_height::<Exact, _>(x.pt, y.pt));
             out[j] = best.map(|u| u.pt);
             cap = Some(best.map_or(b.pt, |u| u.pt));
         }
@@ -204,7 +220,7 @@ mod tests {
                 let f = validate::<Exact>(&p, &q, a, b).unwrap();
                 let (pa, qa) = apexes_of(&p, &q, f);
                 for (bs, fb, us, fu) in [(&pa, f.p, &qa, f.q), (&qa, f.q, &pa, f.p)] {
-                    let r = regions::<Exact>(bs, fb, us, fu);
+                    let r = regions::<Exact, _>(bs, fb, us, fu);
                     let up: Vec<_> = r.iter().map(|r| r.up).collect();
                     let down: Vec<_> = r.iter().map(|r| r.down).collect();
                     assert_eq!(up, up_def(bs, fb, us, fu), "u+ for {p:?} {q:?}");
@@ -241,12 +257,12 @@ mod tests {
                 let Some(f) = f.frames else { continue };
                 let (pa, qa) = apexes_of(&p, &q, f);
                 for (bs, fb, us, fu) in [(&pa, f.p, &qa, f.q), (&qa, f.q, &pa, f.p)] {
-                    let r = regions::<Exact>(bs, fb, us, fu);
+                    let r = regions::<Exact, _>(bs, fb, us, fu);
                     for (bj, rj) in bs.iter().zip(&r) {
                         for u in us {
                             let lit = place::<Exact>(fu, bj.pt, rj, u.pt);
                             assert_eq!(
-                                band::<Exact>(fu, bj.pt, rj, u.pt),
+                                band::<Exact, _>(fu, bj.pt, rj, u.pt),
                                 lit,
                                 "{:?} against R({:?}) = {rj:?}, chains {p:?} {q:?}",
                                 u.pt,

@@ -66,13 +66,12 @@ pub struct SeparationStats {
     /// Separator route only: subproblems solved by section 3 across the line of `l_i`.
     pub subproblems_section3: usize,
     /// Separator route only: subproblems scanned exactly in `O(|P_i| · |Q_i|)`: small ones (at most
-    /// 256 vertex pairs, where section 3's set-up costs more), and those whose subchains cross the
-    /// line of `l_i` more often than `split` hands to section 3 (clip points are not built).
+    /// 256 vertex pairs, where section 3's set-up costs more), and those section 3 rejects (its
+    /// consistency checks, which fail only under the Fast kernel in our tests).
     pub subproblems_scanned: usize,
-    /// Separator route only: of the scanned subproblems, those of more than 256 vertex pairs (the
-    /// quadratic case: they cross the line of `l_i` too often for `split`). They are scanned last,
-    /// pruned by bounding boxes against the best answer of all other subproblems and by their
-    /// distance to `l_i`.
+    /// Separator route only: of the scanned subproblems, those of more than 256 vertex pairs (none
+    /// in the interlocked stars test since Step G, which asserts it). They are scanned last, pruned by bounding
+    /// boxes against the best answer of all other subproblems and by their distance to `l_i`.
     pub subproblems_scanned_large: usize,
     /// Separator route only: cuts not found where the construction puts them (0 under the exact
     /// kernels in every test); the subchain then runs to the end of its wall, which is still sound.
@@ -81,6 +80,10 @@ pub struct SeparationStats {
     /// the monotone sweep answered in place of section 3 (both monotone along the line, windows
     /// within the budget).
     pub subproblem_parts_swept: usize,
+    /// Separator route only: side assignments of subproblems that cross the line of `l_i` more
+    /// often than pairs of runs allow, solved by section 3 on the subchains clipped to the line
+    /// (gapped chains with symbolic clip points: Step G).
+    pub subproblem_parts_gapped: usize,
     /// [`Route::MonotoneSweep`](crate::Route::MonotoneSweep) only: the candidate pairs the sweep
     /// tried (at most `96N + 1024`).
     pub sweep_candidates: usize,

@@ -34,12 +34,13 @@ use crate::brute::{
     scan_winner_below_except, upper_bound,
 };
 use crate::error::SeparationError;
+use crate::gapped::separation_of_gapped;
 use crate::geodesic::{Hit, first_hit_within, merge_collinear, shortest_path};
 use crate::monotone::sweep_chains;
 use crate::param::{Affine, Edge, Param};
 use crate::pockets::{Pruned, Wall, walls};
 use crate::result::{ClosestPair, SeparationStats};
-use crate::sigma::separation_of_chains;
+use crate::sigma::{build as build_pair, separation_of_chains};
 use crate::spm::{Extensions, extensions};
 use crate::triangulate::{Triangulation, triangulate};
 
@@ -1404,30 +1405,23 @@ fn solve_pass<K: Kernel>(
                 }
             };
             // Small subproblems are scanned: section 3's set-up costs more than the few pairs.
-            // Deferred ones were refused by `split` already.
-            let found = if pcv.len() * qcv.len() <= scan_below || matches!(pick, Pick::Only(_)) {
+            let jobs = if pcv.len() * qcv.len() <= scan_below {
                 None
             } else {
-                split::<K>(&pcv, &qcv, a, c).and_then(|jobs| {
-                    execute::<K>(
-                        &pcv,
-                        &qcv,
-                        (a, c),
-                        near,
-                        &jobs,
-                        cut,
-                        &mut stats.subproblem_parts_swept,
-                    )
-                })
+                Some(split::<K>(&pcv, &qcv, a, c))
             };
-            // A scan of this part is pruned ([`scan_part`]'s test), and waits when deferring.
+            // A large part that goes to section 3 on clipped chains, or is scanned (pruned:
+            // [`scan_part`]'s test), waits when deferring: the best answer of all the others then
+            // trims it (only its parts near the line can beat that).
             let large = pcv.len() * qcv.len() > PRUNE_ABOVE;
-            if found.is_none() && large {
+            if large && jobs.as_ref().is_none_or(|j| !j.gapped.is_empty()) {
                 if let Pick::Defer(later) = &mut pick {
                     later.push((i, part));
                     continue;
                 }
             }
+            let found =
+                jobs.and_then(|jobs| execute::<K>(&pcv, &qcv, (a, c), near, &jobs, cut, stats));
             stats.subproblem_vertices += pcv.len() + qcv.len();
             match found {
                 Some(found) => {
@@ -1578,7 +1572,7 @@ fn execute<K: Kernel>(
     near: impl Fn() -> Near,
     jobs: &Jobs,
     cut: f64,
-    swept: &mut usize,
+    stats: &mut SeparationStats,
 ) -> Option<Vec<Candidate>> {
     let shift = |f: Feature, by: usize| match f {
         Feature::Vertex(k) => Feature::Vertex(k + by),
@@ -1589,7 +1583,7 @@ fn execute<K: Kernel>(
         // Parts monotone along the line: the exact windowed sweep first (the parts' nearest pair,
         // or some pair no nearer than the cut), section 3 when it declines.
         if let Some(w) = sweep_chains::<K>(&p[p0..=p1], &q[q0..=q1], a, c, cut) {
-            *swept += 1;
+            stats.subproblem_parts_swept += 1;
             let (fp, fq) = w.features();
             out.push((shift(fp, p0), shift(fq, q0), Err(w)));
             continue;
@@ -1603,6 +1597,16 @@ fn execute<K: Kernel>(
         let (fp, fq) = w.features();
         out.push((shift(fp, p0), shift(fq, q0), Err(w)));
     }
+    if let Some((sp, sq)) = &jobs.sides {
+        for &wrong_p in &jobs.gapped {
+            let found = separation_of_gapped::<K>(p, q, (a, c), (sp, sq), wrong_p, cut).ok()?;
+            stats.subproblem_parts_gapped += 1;
+            if let Some((cand, _)) = found {
+                let pair = build_pair::<K>(cand);
+                out.push((pair.feature_p, pair.feature_q, Ok(pair)));
+            }
+        }
+    }
     Some(out)
 }
 
@@ -1611,10 +1615,14 @@ fn execute<K: Kernel>(
 struct Jobs {
     section3: Vec<((usize, usize), (usize, usize))>,
     scans: Vec<((usize, usize), (usize, usize))>,
+    /// Side assignments (the side `P` must avoid) for section 3 on the clipped subchains
+    /// ([`separation_of_gapped`]), with each vertex's side of the line.
+    gapped: Vec<Orientation>,
+    sides: Option<(Vec<Orientation>, Vec<Orientation>)>,
 }
 
-/// A partial Step G (docs/algorithms/separator.md), `O(|P_i| + |Q_i|)` orientation tests; `None`
-/// when the subproblem is to be scanned whole.
+/// Step G (docs/algorithms/separator.md): how section 3 takes one subproblem across the line
+/// through `a`, `c`, decided by `O(|P_i| + |Q_i|)` orientation tests.
 ///
 /// 1. **Peeled ends.** When the only vertices across the line through `a`, `c` are ends of the
 ///    subchains (a subchain widened to the whole edge its cut falls in crosses the line there; see
@@ -1630,8 +1638,13 @@ struct Jobs {
 ///    crossing edge, and every pair either assignment evaluates is a pair of boundary points, so the
 ///    minimum is still `σ`. Runs are not joined across the gaps (no fake edges). Taken when each
 ///    chain has at most [`MAX_RUNS`] runs and [`MAX_CROSSINGS`] crossing edges per assignment, so the
-///    work stays `O(|P_i| + |Q_i|)`; clip points (section 3 on gapped chains) would lift the bounds.
-fn split<K: Kernel>(p: &[DVec2], q: &[DVec2], a: DVec2, c: DVec2) -> Option<Jobs> {
+///    work stays `O(|P_i| + |Q_i|)`.
+/// 3. **Clipped chains.** For an assignment with more runs or crossing edges: one section 3 call
+///    on the two subchains clipped to their closed half-planes ([`separation_of_gapped`]: the runs
+///    end at symbolic clip points on the line and are not joined), `O((|P_i| + |Q_i|) log k)` for
+///    `k` runs; the same argument holds, since the clipped chains hold every point of either chain
+///    on its side.
+fn split<K: Kernel>(p: &[DVec2], q: &[DVec2], a: DVec2, c: DVec2) -> Jobs {
     // Each vertex's side of the line, decided once for both routes and both assignments.
     let side = |chain: &[DVec2]| -> Vec<Orientation> {
         chain.iter().map(|&v| K::orient(a, c, v)).collect()
@@ -1652,21 +1665,28 @@ fn split<K: Kernel>(p: &[DVec2], q: &[DVec2], a: DVec2, c: DVec2) -> Option<Jobs
         if q1 < ql {
             scans.push(((p0, p1), (q1, ql)));
         }
-        return Some(Jobs {
+        return Jobs {
             section3: vec![((p0, p1), (q0, q1))],
             scans,
-        });
+            gapped: Vec::new(),
+            sides: None,
+        };
     }
     let mut jobs = Jobs {
         section3: Vec::new(),
         scans: Vec::new(),
+        gapped: Vec::new(),
+        sides: None,
     };
     for (wp, wq) in [
         (Orientation::Clockwise, Orientation::CounterClockwise),
         (Orientation::CounterClockwise, Orientation::Clockwise),
     ] {
-        let (rp, cp) = runs(&sp, wp)?;
-        let (rq, cq) = runs(&sq, wq)?;
+        let (Some((rp, cp)), Some((rq, cq))) = (runs(&sp, wp), runs(&sq, wq)) else {
+            // Too many runs for pairs of runs: section 3 on the clipped subchains.
+            jobs.gapped.push(wp);
+            continue;
+        };
         for &x in &rp {
             for &y in &rq {
                 jobs.section3.push((x, y));
@@ -1677,7 +1697,10 @@ fn split<K: Kernel>(p: &[DVec2], q: &[DVec2], a: DVec2, c: DVec2) -> Option<Jobs
         jobs.scans
             .extend(cq.iter().map(|&k| ((0, p.len() - 1), (k, k + 1))));
     }
-    Some(jobs)
+    if !jobs.gapped.is_empty() {
+        jobs.sides = Some((sp, sq));
+    }
+    jobs
 }
 
 /// Runs per chain and side assignment that [`split`] gives to section 3.
@@ -1728,9 +1751,8 @@ const PRUNE_ABOVE: usize = 256;
 /// of two subchains that lie in opposite closed half-planes of the line through `a`, `c`, when the
 /// vertices outside them are the chains' ends and lie strictly on the wrong side (a subchain widened
 /// to the whole edge its cut falls in crosses the line there). The peeled end edges are scanned
-/// against the other chain in `O(|P_i| + |Q_i|)` each; clipping at constructed points, which would
-/// also keep a middle that leaves its half-plane, is not built. `None` when no side assignment
-/// works. `sp`, `sq`: each vertex's side of the line. `O(|P_i| + |Q_i|)`.
+/// against the other chain in `O(|P_i| + |Q_i|)` each (cheaper than clipping them at constructed
+/// points, [`separation_of_gapped`]). `None` when no side assignment works. `sp`, `sq`: each vertex's side of the line. `O(|P_i| + |Q_i|)`.
 fn peeled(sp: &[Orientation], sq: &[Orientation]) -> Option<((usize, usize), (usize, usize))> {
     let middle = |sides: &[Orientation], wrong: Orientation| {
         let bad = |s: &Orientation| *s == wrong;
@@ -2646,9 +2668,9 @@ mod tests {
     /// the chains cross the line anywhere but the closest pair is in opposite closed half-planes
     /// and meets the separator (here the vertex alone; the conditions Lemma 1 guarantees): the
     /// jobs' best candidate is `σ` exactly, under `K`.
-    /// `None` when the seed draws no pair; else whether `split` split (`Some(None)`: it declined)
-    /// into several runs.
-    fn check_split<K: Kernel>(seed: u64) -> Option<Option<bool>> {
+    /// `None` when the seed draws no pair; else whether `split` made several parts of runs, and
+    /// whether it clipped the chains for some assignment (section 3 on gapped chains).
+    fn check_split<K: Kernel>(seed: u64) -> Option<(bool, bool)> {
         let (p, q) = family_pair(seed)?;
         let mut rng = SplitMix64::new(seed ^ 0x5b11);
         let sub = |rng: &mut SplitMix64, v: &[DVec2]| {
@@ -2668,9 +2690,7 @@ mod tests {
                 break d;
             }
         };
-        let Some(jobs) = split::<K>(&pc, &qc, anchor, anchor + dir) else {
-            return Some(None);
-        };
+        let jobs = split::<K>(&pc, &qc, anchor, anchor + dir);
         // The closest pair meets the line at `anchor`: a separator `l_i = {anchor}` on it.
         let near = Near {
             a: anchor,
@@ -2685,9 +2705,9 @@ mod tests {
             || near,
             &jobs,
             f64::INFINITY,
-            &mut 0,
+            &mut SeparationStats::default(),
         )
-        .expect("section 3 accepts every part split hands it");
+        .unwrap_or_else(|| panic!("seed {seed}: section 3 refused a part split handed it"));
         let best = found
             .iter()
             .map(|(fp, fq, _)| dist_of(&pc, &qc, *fp, *fq))
@@ -2699,31 +2719,142 @@ mod tests {
             Ordering::Equal,
             "seed {seed}: {pc:?} {qc:?} line {anchor:?} + {dir:?}"
         );
-        Some(Some(jobs.section3.len() > 1))
+        Some((jobs.section3.len() > 1, !jobs.gapped.is_empty()))
     }
 
     /// [`check_split`] on 3,000 seeds under Robust and 300 under Exact; counts the multi-run splits
-    /// so that the second route is exercised, not only the peeled one.
+    /// and the clipped ones so that the second and third routes are exercised, not only the peeled
+    /// one.
     #[test]
     fn split_keeps_every_pair_across_its_line() {
-        let (mut tried, mut multi, mut whole) = (0, 0, 0);
-        for seed in 0..3000u64 {
-            match check_split::<Robust>(seed) {
-                Some(Some(m)) => {
-                    tried += 1;
-                    multi += usize::from(m);
-                }
-                Some(None) => whole += 1,
-                None => {}
-            }
+        let (mut tried, mut multi, mut clipped) = (0, 0, 0);
+        for (m, g) in (0..3000u64).filter_map(check_split::<Robust>) {
+            tried += 1;
+            multi += usize::from(m);
+            clipped += usize::from(g);
         }
         for seed in 0..300u64 {
             check_split::<Exact>(seed);
         }
         assert!(
-            tried > 1000 && multi > 200,
-            "{tried} split, {multi} multi-run, {whole} whole"
+            tried > 1000 && multi > 200 && clipped > 20,
+            "{tried} split, {multi} multi-run, {clipped} clipped"
         );
+    }
+
+    /// The structure [`crate::gapped::clip_runs`] promises, with no cut: every vertex not strictly
+    /// on the wrong side is a site exactly once, in order; every edge from the wrong side strictly
+    /// to the kept side gives exactly one clip point; no site is strictly on the wrong side; and consecutive
+    /// sites of a run are joined by a piece of one chain edge.
+    fn check_clip_structure(chain: &[DVec2], sides: &[Orientation], wrong: Orientation) {
+        use crate::gapped::{Origin, clip_runs};
+        let g = clip_runs(chain, sides, wrong, (DVec2::ZERO, DVec2::X), f64::INFINITY);
+        let n = chain.len();
+        let vertices: Vec<usize> = (0..n).filter(|&k| sides[k] != wrong).collect();
+        // An edge from the wrong side to the line ends on the line already: no clip point.
+        let good = |k: usize| sides[k] != wrong && !sides[k].is_collinear();
+        let clips: Vec<usize> = (0..n - 1)
+            .filter(|&e| (sides[e] == wrong && good(e + 1)) || (good(e) && sides[e + 1] == wrong))
+            .collect();
+        let got_v: Vec<usize> = g
+            .origin
+            .iter()
+            .filter_map(|o| match o {
+                Origin::Vertex(k) => Some(*k),
+                Origin::Clip(_) => None,
+            })
+            .collect();
+        let got_c: Vec<usize> = g
+            .origin
+            .iter()
+            .filter_map(|o| match o {
+                Origin::Clip(e) => Some(*e),
+                Origin::Vertex(_) => None,
+            })
+            .collect();
+        assert_eq!(got_v, vertices, "{sides:?}");
+        assert_eq!(got_c, clips, "{sides:?}");
+        let mut next = 0;
+        for &(s, t) in &g.runs {
+            assert_eq!(s, next, "runs cover the sites in order: {:?}", g.runs);
+            next = t + 1;
+            for k in s..t {
+                let linked = match (g.origin[k], g.origin[k + 1]) {
+                    (Origin::Vertex(i), Origin::Vertex(j)) => j == i + 1,
+                    (Origin::Vertex(i), Origin::Clip(e)) => e == i,
+                    (Origin::Clip(e), Origin::Vertex(j)) => j == e + 1,
+                    (Origin::Clip(_), Origin::Clip(_)) => false,
+                };
+                assert!(linked, "sites {k}, {} of {:?}", k + 1, g.origin);
+            }
+        }
+        assert_eq!(next, g.sites.len());
+    }
+
+    /// [`separation_of_gapped`] on its own, for one seed: two sub-chains of an interlocked pair and
+    /// a line through a vertex of their closest pair in a random lattice direction (as
+    /// [`check_split`]), under both assignments of sides, with no cut and with a cut just above
+    /// `σ²`. Each answer is a true pair of the sub-chains, no nearer than `σ`, and the nearer of
+    /// the two assignments is `σ` exactly (the closest pair lies in opposite closed half-planes).
+    fn check_gapped<K: Kernel>(seed: u64) -> Option<()> {
+        let (p, q) = family_pair(seed)?;
+        let mut rng = SplitMix64::new(seed ^ 0x9a9e);
+        let sub = |rng: &mut SplitMix64, v: &[DVec2]| {
+            let (s, len) = (rng.index(v.len()), 2 + rng.index(v.len() - 1));
+            (0..len).map(|t| v[(s + t) % v.len()]).collect::<Vec<_>>()
+        };
+        let (pc, qc) = (sub(&mut rng, p.vertices()), sub(&mut rng, q.vertices()));
+        let brute = separation_brute::<K>(&pc, &qc).unwrap();
+        let anchor = match (brute.feature_p, brute.feature_q) {
+            (Feature::Vertex(i), _) => pc[i],
+            (_, Feature::Vertex(j)) => qc[j],
+            _ => unreachable!("a closest pair has a vertex"),
+        };
+        let dir = loop {
+            let d = DVec2::new(rng.range_i64(-3, 4) as f64, rng.range_i64(-3, 4) as f64);
+            if d != DVec2::ZERO {
+                break d;
+            }
+        };
+        let (a, c) = (anchor, anchor + dir);
+        let side = |v: &[DVec2]| v.iter().map(|&x| K::orient(a, c, x)).collect::<Vec<_>>();
+        let (sp, sq) = (side(&pc), side(&qc));
+        let bd = dist_of(&pc, &qc, brute.feature_p, brute.feature_q);
+        for cut in [f64::INFINITY, brute.squared_distance * (1.0 + 1e-9)] {
+            let mut best: Option<Dist2> = None;
+            for wrong_p in [Orientation::Clockwise, Orientation::CounterClockwise] {
+                if cut.is_infinite() {
+                    check_clip_structure(&pc, &sp, wrong_p);
+                    check_clip_structure(&qc, &sq, wrong_p.reversed());
+                }
+                let found = separation_of_gapped::<K>(&pc, &qc, (a, c), (&sp, &sq), wrong_p, cut)
+                    .unwrap_or_else(|e| panic!("seed {seed}: {e:?}"));
+                let Some((cand, _)) = found else { continue };
+                let pair = build_pair::<K>(cand);
+                let d = dist_of(&pc, &qc, pair.feature_p, pair.feature_q);
+                assert_ne!(K::cmp_dist2(d, bd), Ordering::Less, "seed {seed}: below σ");
+                if best.is_none_or(|b| K::cmp_dist2(d, b) == Ordering::Less) {
+                    best = Some(d);
+                }
+            }
+            let best = best.unwrap_or_else(|| panic!("seed {seed}: no answer"));
+            assert_eq!(
+                K::cmp_dist2(best, bd),
+                Ordering::Equal,
+                "seed {seed} cut {cut}: {pc:?} {qc:?} line {a:?} {c:?}"
+            );
+        }
+        Some(())
+    }
+
+    /// [`check_gapped`] on 3,000 seeds under Robust and 200 under Exact.
+    #[test]
+    fn gapped_section_3_finds_the_pair_across_its_line() {
+        let tried = (0..3000u64).filter_map(check_gapped::<Robust>).count();
+        for seed in 0..200u64 {
+            check_gapped::<Exact>(seed);
+        }
+        assert!(tried > 1200, "{tried} seeds drew a pair");
     }
 
     proptest::proptest! {

@@ -8,6 +8,7 @@ use monotone_minima::row_minima_by;
 use polydist_polygon::Feature;
 use polydist_predicates::{Dist2, Kernel, Sign};
 
+use crate::chain::{Frames, Prepared};
 use crate::chain::{OnLine, Validated, validate_touching};
 use crate::construct::{vertex_edge, vertex_vertex};
 use crate::cve::{CveMatrix, EdgeEntry, compare_edge_entries};
@@ -16,29 +17,30 @@ use crate::envelope::prepare;
 use crate::error::{Chain, SeparationError};
 use crate::pieces::pieces;
 use crate::result::{ChainSeparation, ClosestPair, SeparationStats};
+use crate::site::Vertex;
 use crate::wedge::apexes;
 
 /// A candidate pair in caller features, before construction.
 #[derive(Clone, Copy, Debug)]
-enum Cand {
+pub(crate) enum Cand<V = DVec2> {
     /// Vertex `p` (caller `i`) and vertex `q` (caller `j`).
-    Vv(DVec2, usize, DVec2, usize),
+    Vv(V, usize, V, usize),
     /// A vertex `v` (caller `j`) of one chain and the edge `(a, b)` of the other, with the caller
     /// indices of `a` and `b` and of the edge; `p_side` says the edge is `P`'s.
     Ve {
-        v: DVec2,
+        v: V,
         j: usize,
-        a: DVec2,
+        a: V,
         ia: usize,
-        b: DVec2,
+        b: V,
         ib: usize,
         edge: usize,
         p_side: bool,
     },
 }
 
-impl Cand {
-    fn dist(&self) -> Dist2 {
+impl<V: Vertex> Cand<V> {
+    pub(crate) fn dist(&self) -> Dist2<V> {
         match *self {
             Cand::Vv(p, _, q, _) => Dist2::PointPoint(p, q),
             Cand::Ve { v, a, b, .. } => Dist2::PointSegment(v, a, b),
@@ -48,9 +50,9 @@ impl Cand {
 
 /// The best candidate of the CVE search of `m` (the edges of one chain against the vertices of the
 /// other).
-fn cve<K: Kernel>(m: &CveMatrix<K>, p_side: bool) -> Option<Cand> {
-    let minima = row_minima_by(m, compare_edge_entries::<K>);
-    let mut best: Option<(usize, usize, EdgeEntry)> = None;
+fn cve<K: Kernel, V: Vertex>(m: &CveMatrix<K, V>, p_side: bool) -> Option<Cand<V>> {
+    let minima = row_minima_by(m, compare_edge_entries::<K, V>);
+    let mut best: Option<(usize, usize, EdgeEntry<V>)> = None;
     for (i, &j) in minima.iter().enumerate() {
         let e = monotone_minima::Matrix::entry(m, i, j);
         if !matches!(e, EdgeEntry::Dist { .. }) {
@@ -58,7 +60,7 @@ fn cve<K: Kernel>(m: &CveMatrix<K>, p_side: bool) -> Option<Cand> {
         }
         if best
             .as_ref()
-            .is_none_or(|(_, _, b)| compare_edge_entries::<K>(&e, b) == Ordering::Less)
+            .is_none_or(|(_, _, b)| compare_edge_entries::<K, V>(&e, b) == Ordering::Less)
         {
             best = Some((i, j, e));
         }
@@ -159,42 +161,69 @@ pub fn separation_of_chains<K: Kernel>(
             stats: SeparationStats::default(),
         });
     };
-    let mut pp = prepare::<K>(p, frames.p, Chain::P)?;
-    let mut qq = prepare::<K>(q, frames.q, Chain::Q)?;
-    let pa = apexes::<K>(&pp, frames.p);
-    let qa = apexes::<K>(&qq, frames.q);
-    let cvv = CvvMatrix::<K>::from_parts(frames, &pp, &qq, pa.clone(), qa.clone());
+    let (best, stats) = solve::<K, DVec2>(p, q, frames, on_line)?;
+    Ok(ChainSeparation {
+        pair: build::<K>(best),
+        stats,
+    })
+}
+
+/// Section 3 on two validated chains (of input points, or of sites: runs clipped to the line's
+/// half-planes, docs/algorithms/separator.md, "Step G"): Lemma 2's envelopes, then CVV and CVE both
+/// ways, and the best of these and `extra` (the on-line pair). The candidate is in the chains' own
+/// vertex and edge indices. `O(n_p + n_q)`.
+pub(crate) fn solve<K: Kernel, V: Vertex>(
+    p: &[V],
+    q: &[V],
+    frames: Frames,
+    extra: Option<Cand<V>>,
+) -> Result<(Cand<V>, SeparationStats), SeparationError> {
+    let pp = prepare::<K, _>(p, frames.p, Chain::P)?;
+    let qq = prepare::<K, _>(q, frames.q, Chain::Q)?;
+    solve_prepared::<K, V>(pp, qq, frames, extra)
+}
+
+/// [`solve`] on envelopes already prepared (those of clipped chains may have gaps).
+pub(crate) fn solve_prepared<K: Kernel, V: Vertex>(
+    mut pp: Prepared<V>,
+    mut qq: Prepared<V>,
+    frames: Frames,
+    extra: Option<Cand<V>>,
+) -> Result<(Cand<V>, SeparationStats), SeparationError> {
+    let pa = apexes::<K, _>(&pp, frames.p);
+    let qa = apexes::<K, _>(&qq, frames.q);
+    let cvv = CvvMatrix::<K, V>::from_parts(frames, &pp, &qq, pa.clone(), qa.clone());
     let vv = cvv.best().map(|(i, j)| {
         let (r, c) = cvv.apexes_at(i, j);
         Cand::Vv(r.pt, r.idx, c.pt, c.idx)
     });
-    let p_pieces = pieces::<K>(&pp, frames.p);
-    let q_pieces = pieces::<K>(&qq, frames.q);
+    let p_pieces = pieces::<K, _>(&pp, frames.p);
+    let q_pieces = pieces::<K, _>(&qq, frames.q);
     let stats_pieces = (p_pieces.len(), q_pieces.len());
     // The matrices take the envelope edges over: nothing else reads them from here on.
     let edges = core::mem::take(&mut pp.edges);
-    let m_pq = CveMatrix::<K>::build(frames.p, frames.q, edges, p_pieces, qa);
+    let m_pq = CveMatrix::<K, V>::build(frames.p, frames.q, edges, p_pieces, qa);
     let pe_qv = cve(&m_pq, true);
     let edges = core::mem::take(&mut qq.edges);
-    let m_qp = CveMatrix::<K>::build(frames.q, frames.p, edges, q_pieces, pa);
+    let m_qp = CveMatrix::<K, V>::build(frames.q, frames.p, edges, q_pieces, pa);
     let qe_pv = cve(&m_qp, false);
-    let mut best: Option<Cand> = None;
-    for c in [vv, pe_qv, qe_pv, on_line].into_iter().flatten() {
-        if best.is_none_or(|b| K::cmp_dist2(c.dist(), b.dist()) == Ordering::Less) {
+    let mut best: Option<Cand<V>> = None;
+    for c in [vv, pe_qv, qe_pv, extra].into_iter().flatten() {
+        if best.is_none_or(|b| V::cmp_dist2::<K>(c.dist(), b.dist()) == Ordering::Less) {
             best = Some(c);
         }
     }
-    let pair = build::<K>(best.ok_or(SeparationError::Inconsistent)?);
-    Ok(ChainSeparation {
-        pair,
-        stats: SeparationStats {
+    let best = best.ok_or(SeparationError::Inconsistent)?;
+    Ok((
+        best,
+        SeparationStats {
             cvv: cvv.stats(),
             pieces_p: stats_pieces.0,
             pieces_q: stats_pieces.1,
             cve_entries_evaluated: m_pq.lookups() + m_qp.lookups(),
             ..SeparationStats::default()
         },
-    })
+    ))
 }
 
 /// The nearest pair of a vertex of `P` and a vertex of `Q` both on the line through `a`, `b`: the
@@ -241,7 +270,7 @@ fn on_the_line<K: Kernel>(p: &[DVec2], q: &[DVec2], on_line: &OnLine) -> Option<
 }
 
 /// The realizing points and caller features of a candidate.
-fn build<K: Kernel>(c: Cand) -> ClosestPair {
+pub(crate) fn build<K: Kernel>(c: Cand) -> ClosestPair {
     match c {
         Cand::Vv(p, i, q, j) => vertex_vertex(p, q, Feature::Vertex(i), Feature::Vertex(j)),
         Cand::Ve {

@@ -8,18 +8,19 @@ use polydist_predicates::{Kernel, Sign};
 
 use crate::chain::Prepared;
 use crate::frame::Frame;
+use crate::site::Vertex;
 
 /// A vertex that survived Lemmas 2 and 3, with the points its wedge's rays pass through
 /// (`None`: the ray is parallel to the line, `p^± = ±∞`).
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct Apex {
-    pub(crate) pt: DVec2,
+pub(crate) struct Apex<V = DVec2> {
+    pub(crate) pt: V,
     /// The caller's index.
     pub(crate) idx: usize,
     /// `h(p)`: the upper ray of `W(p)` passes through it.
-    pub(crate) hi: Option<DVec2>,
+    pub(crate) hi: Option<V>,
     /// `l(p)`: the lower ray of `W(p)` passes through it.
-    pub(crate) lo: Option<DVec2>,
+    pub(crate) lo: Option<V>,
 }
 
 /// `h(p_i)` for every vertex of a chain strictly increasing in height: the point above `p_i` whose
@@ -28,16 +29,16 @@ pub(crate) struct Apex {
 /// vertices above as a stack (Andrew's monotone chain); collinear points are popped so the farthest
 /// tangent point is kept. Every vertex is pushed and popped at most once: at most `2n` orientation
 /// tests and `n` depth tests.
-pub(crate) fn upper_tangents<K: Kernel>(pts: &[DVec2], frame: Frame) -> Vec<Option<usize>> {
-    tangents::<K>(pts, frame, true)
+pub(crate) fn upper_tangents<K: Kernel, V: Vertex>(pts: &[V], frame: Frame) -> Vec<Option<usize>> {
+    tangents::<K, V>(pts, frame, true)
 }
 
 /// `l(p_i)`, the mirror image of [`upper_tangents`] (bottom-to-top scan).
-pub(crate) fn lower_tangents<K: Kernel>(pts: &[DVec2], frame: Frame) -> Vec<Option<usize>> {
-    tangents::<K>(pts, frame, false)
+pub(crate) fn lower_tangents<K: Kernel, V: Vertex>(pts: &[V], frame: Frame) -> Vec<Option<usize>> {
+    tangents::<K, V>(pts, frame, false)
 }
 
-fn tangents<K: Kernel>(pts: &[DVec2], frame: Frame, upper: bool) -> Vec<Option<usize>> {
+fn tangents<K: Kernel, V: Vertex>(pts: &[V], frame: Frame, upper: bool) -> Vec<Option<usize>> {
     let n = pts.len();
     let mut out = vec![None; n];
     let mut stack: Vec<usize> = Vec::with_capacity(n);
@@ -51,14 +52,14 @@ fn tangents<K: Kernel>(pts: &[DVec2], frame: Frame, upper: bool) -> Vec<Option<u
     let mut visit = |i: usize| {
         let p = pts[i];
         while let [.., c2, c1] = stack[..] {
-            if frame.orient::<K>(p, pts[c1], pts[c2]) != stop_on {
+            if frame.orient::<K, _>(p, pts[c1], pts[c2]) != stop_on {
                 stack.pop();
             } else {
                 break;
             }
         }
         if let Some(&t) = stack.last() {
-            if cmp_depth::<K>(frame, pts[t], p) == Ordering::Less {
+            if cmp_depth::<K, V>(frame, pts[t], p) == Ordering::Less {
                 out[i] = Some(t);
             }
         }
@@ -75,14 +76,14 @@ fn tangents<K: Kernel>(pts: &[DVec2], frame: Frame, upper: bool) -> Vec<Option<u
 /// Lemmas 2–3: the wedges of a prepared chain and the vertices with `α(p) ≥ 90°`, i.e.
 /// `(h − p)·(l − p) ≤ 0` (one degree-2 dot sign; `α ≥ 90°` when a ray is parallel to the line).
 /// The wedges are those of the whole prepared chain. `O(n)`.
-pub(crate) fn apexes<K: Kernel>(prep: &Prepared, frame: Frame) -> Vec<Apex> {
-    let hi = upper_tangents::<K>(&prep.pts, frame);
-    let lo = lower_tangents::<K>(&prep.pts, frame);
+pub(crate) fn apexes<K: Kernel, V: Vertex>(prep: &Prepared<V>, frame: Frame) -> Vec<Apex<V>> {
+    let hi = upper_tangents::<K, V>(&prep.pts, frame);
+    let lo = lower_tangents::<K, V>(&prep.pts, frame);
     let mut out = Vec::with_capacity(prep.pts.len());
     for (i, &pt) in prep.pts.iter().enumerate() {
         let (h, l) = (hi[i].map(|k| prep.pts[k]), lo[i].map(|k| prep.pts[k]));
         let keep = match (h, l) {
-            (Some(h), Some(l)) => K::dot_sign(pt, h, pt, l) != Sign::Positive,
+            (Some(h), Some(l)) => V::dot_sign::<K>(pt, h, pt, l) != Sign::Positive,
             _ => true,
         };
         if keep {
@@ -103,27 +104,31 @@ pub(crate) fn apexes<K: Kernel>(prep: &Prepared, frame: Frame) -> Vec<Apex> {
 /// the exact value is then 0, the one case a floating-point filter cannot certify (Robust would
 /// pay its exact stage), and every kernel answers `Equal`.
 #[inline]
-pub(crate) fn cmp_depth<K: Kernel>(frame: Frame, a: DVec2, b: DVec2) -> Ordering {
+pub(crate) fn cmp_depth<K: Kernel, V: Vertex>(frame: Frame, a: V, b: V) -> Ordering {
     let (l0, l1) = (frame.l0, frame.l1);
     // (Only worth testing where the kernel has an exact stage to spare.)
-    if K::EXACT_DECISIONS && (a.x == b.x || l1.y == l0.y) && (a.y == b.y || l1.x == l0.x) {
-        return Ordering::Equal;
+    if K::EXACT_DECISIONS {
+        if let (Some(a), Some(b)) = (a.as_input(), b.as_input()) {
+            if (a.x == b.x || l1.y == l0.y) && (a.y == b.y || l1.x == l0.x) {
+                return Ordering::Equal;
+            }
+        }
     }
-    frame.cmp_depth::<K>(a, b)
+    frame.cmp_depth::<K, _>(a, b)
 }
 
 /// `z ∈ W(a)`: `z` strictly inside the open wedge at `a` (frame of `a`'s chain), strictly below the
 /// upper ray and strictly above the lower ray. Two degree-2 tests.
 #[inline]
-pub(crate) fn in_wedge<K: Kernel>(frame: Frame, a: &Apex, z: DVec2) -> bool {
+pub(crate) fn in_wedge<K: Kernel, V: Vertex>(frame: Frame, a: &Apex<V>, z: V) -> bool {
     let below_upper = match a.hi {
-        Some(h) => frame.orient::<K>(a.pt, h, z) == Sign::Positive,
-        None => cmp_depth::<K>(frame, z, a.pt) == Ordering::Less,
+        Some(h) => frame.orient::<K, _>(a.pt, h, z) == Sign::Positive,
+        None => cmp_depth::<K, V>(frame, z, a.pt) == Ordering::Less,
     };
     below_upper
         && match a.lo {
-            Some(l) => frame.orient::<K>(a.pt, l, z) == Sign::Negative,
-            None => cmp_depth::<K>(frame, z, a.pt) == Ordering::Less,
+            Some(l) => frame.orient::<K, _>(a.pt, l, z) == Sign::Negative,
+            None => cmp_depth::<K, V>(frame, z, a.pt) == Ordering::Less,
         }
 }
 
@@ -191,10 +196,13 @@ mod tests {
     #[test]
     fn frame_matches_plain_coordinates() {
         let (a, b) = (DVec2::new(3.0, 1.0), DVec2::new(1.0, 2.0));
-        assert_eq!(P.cmp_depth::<Exact>(a, b), Ordering::Greater);
-        assert_eq!(P.cmp_height::<Exact>(a, b), Ordering::Less);
-        assert_eq!(P.depth_sign::<Exact>(a), Sign::Positive);
-        assert_eq!(P.depth_sign::<Exact>(DVec2::new(-1.0, 0.0)), Sign::Negative);
+        assert_eq!(P.cmp_depth::<Exact, _>(a, b), Ordering::Greater);
+        assert_eq!(P.cmp_height::<Exact, _>(a, b), Ordering::Less);
+        assert_eq!(P.depth_sign::<Exact, _>(a), Sign::Positive);
+        assert_eq!(
+            P.depth_sign::<Exact, _>(DVec2::new(-1.0, 0.0)),
+            Sign::Negative
+        );
     }
 
     #[test]
@@ -203,8 +211,8 @@ mod tests {
         for n in [1usize, 2, 3, 5, 8, 13, 30, 60] {
             for _ in 0..200 {
                 let pts = chain(&mut rng, n);
-                let up = upper_tangents::<Exact>(&pts, P);
-                let lo = lower_tangents::<Exact>(&pts, P);
+                let up = upper_tangents::<Exact, _>(&pts, P);
+                let lo = lower_tangents::<Exact, _>(&pts, P);
                 for i in 0..pts.len() {
                     assert_eq!(up[i], upper_def(&pts, i), "upper {i} of {pts:?}");
                     assert_eq!(lo[i], lower_def(&pts, i), "lower {i} of {pts:?}");
@@ -222,10 +230,10 @@ mod tests {
         for n in [3usize, 6, 12, 25] {
             for _ in 0..150 {
                 let pts = chain(&mut rng, n);
-                let prep = Prepared::from_rising(&pts);
-                let kept: Vec<usize> = apexes::<Exact>(&prep, P).iter().map(|a| a.idx).collect();
-                let up = upper_tangents::<Exact>(&pts, P);
-                let lo = lower_tangents::<Exact>(&pts, P);
+                let prep = Prepared::<DVec2>::from_rising(&pts);
+                let kept: Vec<usize> = apexes::<Exact, _>(&prep, P).iter().map(|a| a.idx).collect();
+                let up = upper_tangents::<Exact, _>(&pts, P);
+                let lo = lower_tangents::<Exact, _>(&pts, P);
                 for i in (0..pts.len()).filter(|i| !kept.contains(i)) {
                     pruned += 1;
                     let (h, l) = (pts[up[i].unwrap()], pts[lo[i].unwrap()]);

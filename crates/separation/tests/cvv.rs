@@ -47,11 +47,11 @@ fn check_case<K: Kernel>(c: &Case, check_matrix: bool) {
     assert!(only.is_ok());
     if check_matrix {
         let m = CvvMatrix::<K>::new(&c.p, &c.q, c.a, c.b).unwrap();
-        check_totally_monotone_by(&m, compare_entries::<K>)
+        check_totally_monotone_by(&m, compare_entries::<K, _>)
             .unwrap_or_else(|e| panic!("{}: M not totally monotone: {e:?}", c.name));
         assert_eq!(
-            row_minima_by(&m, compare_entries::<K>),
-            brute_force_row_minima_by(&m, compare_entries::<K>),
+            row_minima_by(&m, compare_entries::<K, _>),
+            brute_force_row_minima_by(&m, compare_entries::<K, _>),
             "{}",
             c.name
         );

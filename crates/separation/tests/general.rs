@@ -344,25 +344,25 @@ fn agree<K: Kernel>(c: &Case, check_matrices: bool) {
             .all(|&v| Exact::orient(c.a, c.b, v).sign().is_zero());
     if check_matrices && !all_on_line {
         let m = CvvMatrix::<K>::new(&c.p, &c.q, c.a, c.b).unwrap();
-        check_totally_monotone_by(&m, compare_entries::<K>)
+        check_totally_monotone_by(&m, compare_entries::<K, _>)
             .unwrap_or_else(|e| panic!("{}: CVV matrix not totally monotone: {e:?}", c.name));
         assert_eq!(
-            row_minima_by(&m, compare_entries::<K>),
-            brute_force_row_minima_by(&m, compare_entries::<K>),
+            row_minima_by(&m, compare_entries::<K, _>),
+            brute_force_row_minima_by(&m, compare_entries::<K, _>),
             "{}",
             c.name
         );
         for (p, q) in [(&c.p, &c.q), (&c.q, &c.p)] {
             let m = CveMatrix::<K>::new(p, q, c.a, c.b).unwrap();
-            check_totally_monotone_by(&m, compare_edge_entries::<K>).unwrap_or_else(|e| {
+            check_totally_monotone_by(&m, compare_edge_entries::<K, _>).unwrap_or_else(|e| {
                 panic!(
                     "{}: CVE matrix not totally monotone: {e:?}\np={p:?}\nq={q:?}\nline {:?} {:?}",
                     c.name, c.a, c.b
                 )
             });
             assert_eq!(
-                row_minima_by(&m, compare_edge_entries::<K>),
-                brute_force_row_minima_by(&m, compare_edge_entries::<K>),
+                row_minima_by(&m, compare_edge_entries::<K, _>),
+                brute_force_row_minima_by(&m, compare_edge_entries::<K, _>),
                 "{}",
                 c.name
             );

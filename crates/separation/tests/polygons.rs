@@ -694,12 +694,12 @@ fn interlocked_combs_go_through_the_separator() {
 
 /// Two random stars of 400 vertices (a spike every fourth) pushed into each other: their
 /// separators' lines pass through many spikes, so some subproblems cross their line too often for
-/// `split` and are scanned whole, last, pruned by the best answer and by their distance to the
-/// separator. The reported features are exactly as near as the brute force's, under Robust and
-/// Exact.
+/// pairs of runs and go to section 3 on the subchains clipped to the line (gapped chains, symbolic
+/// clip points: Step G). The reported features are exactly as near as the brute force's, under
+/// Robust and Exact.
 #[test]
-fn interlocked_stars_scanned_near_their_separators() {
-    let (mut cases, mut large) = (0, 0);
+fn interlocked_stars_solved_on_clipped_chains() {
+    let (mut cases, mut gapped, mut large) = (0, 0, 0);
     for seed in 0..12u64 {
         let mut rng = SplitMix64::new(seed);
         let p = star(&mut rng, 400, 100);
@@ -721,6 +721,7 @@ fn interlocked_stars_scanned_near_their_separators() {
                 continue;
             };
             cases += 1;
+            gapped += stats.subproblem_parts_gapped;
             large += stats.subproblems_scanned_large;
             let Ok(PolygonSeparation::Separated { pair: brute, .. }) =
                 polygon_separation_brute::<Robust>(&sp, &sq)
@@ -756,8 +757,8 @@ fn interlocked_stars_scanned_near_their_separators() {
         }
     }
     assert!(
-        cases >= 6 && large >= 2,
-        "{cases} cases, {large} large scans"
+        cases >= 6 && gapped >= 2 && large == 0,
+        "{cases} cases, {gapped} gapped parts, {large} large scans"
     );
 }
 

@@ -53,11 +53,11 @@ fn agree<K: Kernel>(c: &Case, check_matrices: bool) -> bool {
     if check_matrices {
         for (p, q) in [(&c.p, &c.q), (&c.q, &c.p)] {
             let m = CveMatrix::<K>::new(p, q, c.a, c.b).unwrap();
-            check_totally_monotone_by(&m, compare_edge_entries::<K>)
+            check_totally_monotone_by(&m, compare_edge_entries::<K, _>)
                 .unwrap_or_else(|e| panic!("{}: CVE matrix not totally monotone: {e:?}", c.name));
             assert_eq!(
-                row_minima_by(&m, compare_edge_entries::<K>),
-                brute_force_row_minima_by(&m, compare_edge_entries::<K>),
+                row_minima_by(&m, compare_edge_entries::<K, _>),
+                brute_force_row_minima_by(&m, compare_edge_entries::<K, _>),
                 "{}",
                 c.name
             );
