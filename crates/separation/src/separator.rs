@@ -2796,7 +2796,9 @@ mod tests {
     /// [`check_split`]), under both assignments of sides, with no cut and with a cut just above
     /// `σ²`. Each answer is a true pair of the sub-chains, no nearer than `σ`, and the nearer of
     /// the two assignments is `σ` exactly (the closest pair lies in opposite closed half-planes).
-    fn check_gapped<K: Kernel>(seed: u64) -> Option<()> {
+    /// Under the Fast kernel (`exact == false`) only that nothing panics or loops: section 3 may
+    /// then refuse the chains, or answer wrongly.
+    fn check_gapped<K: Kernel>(seed: u64, exact: bool) -> Option<()> {
         let (p, q) = family_pair(seed)?;
         let mut rng = SplitMix64::new(seed ^ 0x9a9e);
         let sub = |rng: &mut SplitMix64, v: &[DVec2]| {
@@ -2827,15 +2829,25 @@ mod tests {
                     check_clip_structure(&pc, &sp, wrong_p);
                     check_clip_structure(&qc, &sq, wrong_p.reversed());
                 }
-                let found = separation_of_gapped::<K>(&pc, &qc, (a, c), (&sp, &sq), wrong_p, cut)
-                    .unwrap_or_else(|e| panic!("seed {seed}: {e:?}"));
+                let found = separation_of_gapped::<K>(&pc, &qc, (a, c), (&sp, &sq), wrong_p, cut);
+                let found = match found {
+                    Ok(found) => found,
+                    Err(_) if !exact => continue,
+                    Err(e) => panic!("seed {seed}: {e:?}"),
+                };
                 let Some((cand, _)) = found else { continue };
                 let pair = build_pair::<K>(cand);
                 let d = dist_of(&pc, &qc, pair.feature_p, pair.feature_q);
+                if !exact {
+                    continue;
+                }
                 assert_ne!(K::cmp_dist2(d, bd), Ordering::Less, "seed {seed}: below σ");
                 if best.is_none_or(|b| K::cmp_dist2(d, b) == Ordering::Less) {
                     best = Some(d);
                 }
+            }
+            if !exact {
+                continue;
             }
             let best = best.unwrap_or_else(|| panic!("seed {seed}: no answer"));
             assert_eq!(
@@ -2847,12 +2859,17 @@ mod tests {
         Some(())
     }
 
-    /// [`check_gapped`] on 3,000 seeds under Robust and 200 under Exact.
+    /// [`check_gapped`] on 3,000 seeds under Robust, 200 under Exact and 1,000 under Fast.
     #[test]
     fn gapped_section_3_finds_the_pair_across_its_line() {
-        let tried = (0..3000u64).filter_map(check_gapped::<Robust>).count();
+        let tried = (0..3000u64)
+            .filter_map(|seed| check_gapped::<Robust>(seed, true))
+            .count();
         for seed in 0..200u64 {
-            check_gapped::<Exact>(seed);
+            check_gapped::<Exact>(seed, true);
+        }
+        for seed in 0..1000u64 {
+            check_gapped::<Fast>(seed, false);
         }
         assert!(tried > 1200, "{tried} seeds drew a pair");
     }
