@@ -78,6 +78,24 @@ pub(crate) struct Frames {
     pub(crate) q: Frame,
 }
 
+impl Frames {
+    /// `P` right of the line oriented from `l0` to `l1`, `Q` left of it.
+    pub(crate) fn across(l0: DVec2, l1: DVec2) -> Frames {
+        Frames {
+            p: Frame {
+                l0,
+                l1,
+                mirror: false,
+            },
+            q: Frame {
+                l0,
+                l1,
+                mirror: true,
+            },
+        }
+    }
+}
+
 fn valid(v: DVec2) -> bool {
     is_valid_coordinate(v.x) && is_valid_coordinate(v.y)
 }
@@ -170,18 +188,7 @@ pub(crate) fn validate_touching<K: Kernel>(
         },
     };
     let (l0, l1) = if swap { (b, a) } else { (a, b) };
-    let frames = Frames {
-        p: Frame {
-            l0,
-            l1,
-            mirror: false,
-        },
-        q: Frame {
-            l0,
-            l1,
-            mirror: true,
-        },
-    };
+    let frames = Frames::across(l0, l1);
     let mut on_line = OnLine::default();
     for (chain, pts, frame, on) in [
         (Chain::P, p, frames.p, &mut on_line.p),

@@ -373,18 +373,7 @@ pub(crate) fn separation_of_gapped<K: Kernel>(
     } else {
         (a, c)
     };
-    let frames = Frames {
-        p: Frame {
-            l0,
-            l1,
-            mirror: false,
-        },
-        q: Frame {
-            l0,
-            l1,
-            mirror: true,
-        },
-    };
+    let frames = Frames::across(l0, l1);
     let on_line = on_the_line::<K>(&gp, &gq, frames.p);
     let off = |g: &Gapped, f: Frame| {
         g.sites

@@ -2663,16 +2663,20 @@ mod tests {
         None
     }
 
-    /// `split` on its own, for one seed: two disjoint sub-chains of an interlocked pair and a line
-    /// through a vertex of their brute-force closest pair, in a random lattice direction, so that
-    /// the chains cross the line anywhere but the closest pair is in opposite closed half-planes
-    /// and meets the separator (here the vertex alone; the conditions Lemma 1 guarantees): the
-    /// jobs' best candidate is `σ` exactly, under `K`.
-    /// `None` when the seed draws no pair; else whether `split` made several parts of runs, and
-    /// whether it clipped the chains for some assignment (section 3 on gapped chains).
-    fn check_split<K: Kernel>(seed: u64) -> Option<(bool, bool)> {
+    /// Two sub-chains of a [`family_pair`], their brute-force closest pair, a vertex of it and a
+    /// random lattice direction: a line through the vertex crosses the chains anywhere, but the
+    /// closest pair lies in its opposite closed half-planes. `None` when the seed draws no pair.
+    struct LineCase {
+        pc: Vec<DVec2>,
+        qc: Vec<DVec2>,
+        brute: ClosestPair,
+        anchor: DVec2,
+        dir: DVec2,
+    }
+
+    fn line_case<K: Kernel>(seed: u64, salt: u64) -> Option<LineCase> {
         let (p, q) = family_pair(seed)?;
-        let mut rng = SplitMix64::new(seed ^ 0x5b11);
+        let mut rng = SplitMix64::new(seed ^ salt);
         let sub = |rng: &mut SplitMix64, v: &[DVec2]| {
             let (s, len) = (rng.index(v.len()), 2 + rng.index(v.len() - 1));
             (0..len).map(|t| v[(s + t) % v.len()]).collect::<Vec<_>>()
@@ -2690,6 +2694,30 @@ mod tests {
                 break d;
             }
         };
+        Some(LineCase {
+            pc,
+            qc,
+            brute,
+            anchor,
+            dir,
+        })
+    }
+
+    /// `split` on its own, for one seed: two disjoint sub-chains of an interlocked pair and a line
+    /// through a vertex of their brute-force closest pair, in a random lattice direction, so that
+    /// the chains cross the line anywhere but the closest pair is in opposite closed half-planes
+    /// and meets the separator (here the vertex alone; the conditions Lemma 1 guarantees): the
+    /// jobs' best candidate is `σ` exactly, under `K`.
+    /// `None` when the seed draws no pair; else whether `split` made several parts of runs, and
+    /// whether it clipped the chains for some assignment (section 3 on gapped chains).
+    fn check_split<K: Kernel>(seed: u64) -> Option<(bool, bool)> {
+        let LineCase {
+            pc,
+            qc,
+            brute,
+            anchor,
+            dir,
+        } = line_case::<K>(seed, 0x5b11)?;
         let jobs = split::<K>(&pc, &qc, anchor, anchor + dir);
         // The closest pair meets the line at `anchor`: a separator `l_i = {anchor}` on it.
         let near = Near {
@@ -2799,25 +2827,13 @@ mod tests {
     /// Under the Fast kernel (`exact == false`) only that nothing panics or loops: section 3 may
     /// then refuse the chains, or answer wrongly.
     fn check_gapped<K: Kernel>(seed: u64, exact: bool) -> Option<()> {
-        let (p, q) = family_pair(seed)?;
-        let mut rng = SplitMix64::new(seed ^ 0x9a9e);
-        let sub = |rng: &mut SplitMix64, v: &[DVec2]| {
-            let (s, len) = (rng.index(v.len()), 2 + rng.index(v.len() - 1));
-            (0..len).map(|t| v[(s + t) % v.len()]).collect::<Vec<_>>()
-        };
-        let (pc, qc) = (sub(&mut rng, p.vertices()), sub(&mut rng, q.vertices()));
-        let brute = separation_brute::<K>(&pc, &qc).unwrap();
-        let anchor = match (brute.feature_p, brute.feature_q) {
-            (Feature::Vertex(i), _) => pc[i],
-            (_, Feature::Vertex(j)) => qc[j],
-            _ => unreachable!("a closest pair has a vertex"),
-        };
-        let dir = loop {
-            let d = DVec2::new(rng.range_i64(-3, 4) as f64, rng.range_i64(-3, 4) as f64);
-            if d != DVec2::ZERO {
-                break d;
-            }
-        };
+        let LineCase {
+            pc,
+            qc,
+            brute,
+            anchor,
+            dir,
+        } = line_case::<K>(seed, 0x9a9e)?;
         let (a, c) = (anchor, anchor + dir);
         let side = |v: &[DVec2]| v.iter().map(|&x| K::orient(a, c, x)).collect::<Vec<_>>();
         let (sp, sq) = (side(&pc), side(&qc));
