@@ -2784,22 +2784,13 @@ mod tests {
         let clips: Vec<usize> = (0..n - 1)
             .filter(|&e| (sides[e] == wrong && good(e + 1)) || (good(e) && sides[e + 1] == wrong))
             .collect();
-        let got_v: Vec<usize> = g
-            .origin
-            .iter()
-            .filter_map(|o| match o {
-                Origin::Vertex(k) => Some(*k),
-                Origin::Clip(_) => None,
-            })
-            .collect();
-        let got_c: Vec<usize> = g
-            .origin
-            .iter()
-            .filter_map(|o| match o {
-                Origin::Clip(e) => Some(*e),
-                Origin::Vertex(_) => None,
-            })
-            .collect();
+        let (mut got_v, mut got_c) = (Vec::new(), Vec::new());
+        for o in &g.origin {
+            match *o {
+                Origin::Vertex(k) => got_v.push(k),
+                Origin::Clip(e) => got_c.push(e),
+            }
+        }
         assert_eq!(got_v, vertices, "{sides:?}");
         assert_eq!(got_c, clips, "{sides:?}");
         let mut next = 0;
