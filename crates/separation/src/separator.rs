@@ -2676,12 +2676,50 @@ mod tests {
 
     fn line_case<K: Kernel>(seed: u64, salt: u64) -> Option<LineCase> {
         let (p, q) = family_pair(seed)?;
-        let mut rng = SplitMix64::new(seed ^ salt);
+        line_case_of::<K>(p.vertices(), q.vertices(), seed ^ salt)
+    }
+
+    /// Two lattice shapes (combs and spirals) of integer coordinates, the second moved by an
+    /// integer vector until the two are disjoint (up to 40 tries): the degenerate cases of the
+    /// clipped chains, lines in lattice directions through lattice vertices running through
+    /// vertices and along edges of both, and clip points at rational points that tie.
+    fn lattice_case<K: Kernel>(seed: u64) -> Option<LineCase> {
+        let mut rng = SplitMix64::new(seed ^ 0x1a77);
+        let shape = |rng: &mut SplitMix64| {
+            if rng.below(2) == 0 {
+                polydist_oracle::spiral(3 + rng.below(6) as u32, 1 + rng.below(2) as u32)
+            } else {
+                polydist_oracle::comb(
+                    1 + rng.index(8),
+                    1 + rng.below(4) as u32,
+                    1 + rng.below(2) as u32,
+                )
+            }
+        };
+        let a = shape(&mut rng);
+        let b = shape(&mut rng);
+        let p = SimplePolygon::try_new(&a).ok()?;
+        for _ in 0..40 {
+            let d = DVec2::new(rng.range_i64(-8, 9) as f64, rng.range_i64(-8, 9) as f64);
+            let bq: Vec<DVec2> = b.iter().map(|&x| x + d).collect();
+            let Ok(q) = SimplePolygon::try_new(&bq) else {
+                continue;
+            };
+            if crate::polygon::intersection::<Robust>(&p, &q).is_none() {
+                return line_case_of::<K>(&a, &bq, seed);
+            }
+        }
+        None
+    }
+
+    /// [`LineCase`] of two disjoint polygons' vertices.
+    fn line_case_of<K: Kernel>(p: &[DVec2], q: &[DVec2], seed: u64) -> Option<LineCase> {
+        let mut rng = SplitMix64::new(seed);
         let sub = |rng: &mut SplitMix64, v: &[DVec2]| {
             let (s, len) = (rng.index(v.len()), 2 + rng.index(v.len() - 1));
             (0..len).map(|t| v[(s + t) % v.len()]).collect::<Vec<_>>()
         };
-        let (pc, qc) = (sub(&mut rng, p.vertices()), sub(&mut rng, q.vertices()));
+        let (pc, qc) = (sub(&mut rng, p), sub(&mut rng, q));
         let brute = separation_brute::<K>(&pc, &qc).unwrap();
         let anchor = match (brute.feature_p, brute.feature_q) {
             (Feature::Vertex(i), _) => pc[i],
@@ -2818,13 +2856,18 @@ mod tests {
     /// Under the Fast kernel (`exact == false`) only that nothing panics or loops: section 3 may
     /// then refuse the chains, or answer wrongly.
     fn check_gapped<K: Kernel>(seed: u64, exact: bool) -> Option<()> {
+        check_gapped_on::<K>(line_case::<K>(seed, 0x9a9e)?, seed, exact)
+    }
+
+    /// [`check_gapped`] on a given case.
+    fn check_gapped_on<K: Kernel>(case: LineCase, seed: u64, exact: bool) -> Option<()> {
         let LineCase {
             pc,
             qc,
             brute,
             anchor,
             dir,
-        } = line_case::<K>(seed, 0x9a9e)?;
+        } = case;
         let (a, c) = (anchor, anchor + dir);
         let side = |v: &[DVec2]| v.iter().map(|&x| K::orient(a, c, x)).collect::<Vec<_>>();
         let (sp, sq) = (side(&pc), side(&qc));
@@ -2879,6 +2922,21 @@ mod tests {
             check_gapped::<Fast>(seed, false);
         }
         assert!(tried > 1200, "{tried} seeds drew a pair");
+    }
+
+    /// [`check_gapped`] on 2,000 lattice cases under Robust and 300 under Exact
+    /// ([`lattice_case`]): vertices on the line, edges along it and tied clip points.
+    #[test]
+    fn gapped_section_3_on_lattice_shapes() {
+        let tried = (0..2000u64)
+            .filter_map(|seed| check_gapped_on::<Robust>(lattice_case::<Robust>(seed)?, seed, true))
+            .count();
+        for seed in 0..300u64 {
+            if let Some(case) = lattice_case::<Exact>(seed) {
+                check_gapped_on::<Exact>(case, seed, true);
+            }
+        }
+        assert!(tried > 1000, "{tried} seeds drew a pair");
     }
 
     proptest::proptest! {
