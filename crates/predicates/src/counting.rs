@@ -25,7 +25,8 @@ pub struct PredicateCounts {
     pub cmp_dist4: u64,
     /// [`Kernel::cmp_dist2`] calls.
     pub cmp_dist2: u64,
-    /// [`Kernel::sign`] calls (algorithm-specific polynomials).
+    /// [`Kernel::sign`] calls (algorithm-specific polynomials), and [`crate::sign_at`] calls decided
+    /// before it ([`Kernel::note_decided_at_sites`]).
     pub sign: u64,
 }
 
@@ -106,6 +107,9 @@ impl<K: Kernel> Kernel for Counted<K> {
     fn sign<const N: usize, P: Polynomial<N> + ?Sized>(p: &P, x: &[f64; N]) -> Sign {
         bump(|c| c.sign += 1);
         K::sign(p, x)
+    }
+    fn note_decided_at_sites() {
+        bump(|c| c.sign += 1);
     }
     fn orient(a: DVec2, b: DVec2, c: DVec2) -> Orientation {
         bump(|k| k.orient += 1);

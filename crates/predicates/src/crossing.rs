@@ -301,9 +301,11 @@ where
             }
         }
         if !K::EXACT_DECISIONS {
+            K::note_decided_at_sites();
             return Sign::of_f64(f.eval(&coords.map(|c| c.value)));
         }
         if let Some(s) = ok.then(|| f.eval(&coords).certain_sign()).flatten() {
+            K::note_decided_at_sites();
             return s;
         }
     }

@@ -43,6 +43,12 @@ pub trait Kernel: Copy + Default + Debug + Send + Sync + 'static {
     /// The sign of the homogeneous polynomial `p` at the inputs `x` (see [`Polynomial`]).
     fn sign<const N: usize, P: Polynomial<N> + ?Sized>(p: &P, x: &[f64; N]) -> Sign;
 
+    /// Called once for each decision [`crate::sign_at`] takes without [`Kernel::sign`] (the
+    /// coordinate filter at crossing points, or the Fast kernel's rounded coordinates), so that a
+    /// counting wrapper sees every call: no effect in the three kernels.
+    #[inline(always)]
+    fn note_decided_at_sites() {}
+
     /// The orientation of `(a, b, c)`: the sign of `(b − a) × (c − a)` (degree 2).
     #[inline]
     fn orient(a: DVec2, b: DVec2, c: DVec2) -> Orientation {

@@ -392,3 +392,43 @@ proptest! {
         );
     }
 }
+
+/// A counting kernel sees every `sign_at` call exactly once, whichever stage decides it: the
+/// coordinate filter (Robust, a clear sign), the exact stage (Robust, an exact zero), the rounded
+/// coordinates (Fast), or plain input points.
+#[test]
+fn every_sign_at_call_is_counted_once() {
+    use polydist_predicates::{Counted, predicate_counts, reset_predicate_counts};
+    // The crossing of (−1, −1)–(1, 1) with the x axis is the origin.
+    let c = Site::Crossing {
+        a: DVec2::new(-1.0, -1.0),
+        b: DVec2::new(1.0, 1.0),
+        l0: DVec2::ZERO,
+        l1: DVec2::X,
+    };
+    let (y, z) = (
+        Site::Input(DVec2::new(0.0, 2.0)),
+        Site::Input(DVec2::new(3.0, 1.0)),
+    );
+    let on = Site::Input(DVec2::new(0.0, 7.0));
+    let cases: [([Site; 3], Sign); 3] = [
+        ([c, y, z], Sign::Negative),
+        ([c, y, on], Sign::Zero),
+        ([Site::Input(DVec2::ZERO), y, z], Sign::Negative),
+    ];
+    for (sites, want) in cases {
+        reset_predicate_counts();
+        let got = sign_at::<Counted<Robust>, Orient, 6, 3, 24>(&Orient, sites);
+        assert_eq!((got, predicate_counts().total()), (want, 1), "{sites:?}");
+        reset_predicate_counts();
+        let _ = sign_at::<Counted<Fast>, Orient, 6, 3, 24>(&Orient, sites);
+        assert_eq!(predicate_counts().total(), 1, "Fast, {sites:?}");
+        reset_predicate_counts();
+        let got = sign_at::<Counted<Exact>, Orient, 6, 3, 24>(&Orient, sites);
+        assert_eq!(
+            (got, predicate_counts().total()),
+            (want, 1),
+            "Exact, {sites:?}"
+        );
+    }
+}
