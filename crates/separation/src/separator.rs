@@ -2946,6 +2946,15 @@ mod tests {
         fn proptest_split_keeps_every_pair_across_its_line(seed in proptest::prelude::any::<u64>()) {
             check_split::<Robust>(seed);
         }
+
+        /// [`check_gapped`] on random seeds, random and lattice shapes.
+        #[test]
+        fn proptest_gapped_section_3(seed in proptest::prelude::any::<u64>()) {
+            check_gapped::<Robust>(seed, true);
+            if let Some(case) = lattice_case::<Robust>(seed) {
+                check_gapped_on::<Robust>(case, seed, true);
+            }
+        }
     }
 
     /// Interlocked spiral arms (the benchmarks' corridor, small): the parts of their subproblems are
