@@ -1218,10 +1218,11 @@ fn dist_of(p: &[DVec2], q: &[DVec2], fp: Feature, fq: Feature) -> Dist2 {
 ///
 /// Each subproblem of more than [`SCAN_BELOW`] vertex pairs is given to section 3
 /// ([`separation_of_chains`]) across the line of its run, in the parts [`split`] hands it (peeled
-/// ends, or runs for both assignments of sides, the rest scanned in linear time). Otherwise (small,
-/// or crossing the line more often than `split` takes: clipping at constructed points is not
-/// built) the subproblem is scanned exactly in `O(|P_i| · |Q_i|)`, pruned by bounding boxes. A `Q`
-/// subchain that spans the region's gap (a pocket's lid, no part of `Q`) is split there.
+/// ends, or runs for both assignments of sides, the rest scanned in linear time, or the subchains
+/// clipped to the line, [`separation_of_gapped`]). Small subproblems, and any that section 3
+/// rejects (only under the Fast kernel in our tests), are scanned exactly in `O(|P_i| · |Q_i|)`,
+/// pruned by bounding boxes when large. A `Q` subchain that spans the region's gap (a pocket's lid,
+/// no part of `Q`) is split there.
 pub(crate) fn solve<K: Kernel>(
     p: &SimplePolygon,
     q: &SimplePolygon,
@@ -1241,8 +1242,9 @@ fn solve_with<K: Kernel>(
     let (p, q) = if plan.swapped { (q, p) } else { (p, q) };
     let mut stats = SeparationStats::default();
     let mut best: Option<Best> = None;
-    // The large subproblems that must be scanned whole wait for every other one: their scans skip
-    // what cannot beat the best answer, and what lies farther from their separator ([`Near`]).
+    // The large subproblems that go to clipped chains (or must be scanned whole) wait for every
+    // other one: the clipping and the scans skip what cannot beat the best answer, and the scans
+    // what lies farther from their separator ([`Near`]).
     let mut later = vec![Vec::new(); plan.passes.len()];
     for (b, later) in plan.passes.iter().zip(&mut later) {
         solve_pass::<K>(
@@ -1309,8 +1311,8 @@ struct Best {
 /// Which parts of a pass's subproblems [`solve_pass`] takes, as `(subproblem, part)`: a part is one
 /// side of the region's gap.
 enum Pick<'a> {
-    /// Every part, except that those to be scanned whole with more than [`PRUNE_ABOVE`] vertex
-    /// pairs are left for later, in order.
+    /// Every part, except that those of more than [`PRUNE_ABOVE`] vertex pairs that go to clipped
+    /// chains (or would be scanned whole) are left for later, in order.
     Defer(&'a mut Vec<(usize, usize)>),
     /// Only these (in order), whatever their size.
     Only(&'a [(usize, usize)]),
@@ -1747,12 +1749,13 @@ const SCAN_BELOW: usize = 256;
 /// Scans of more vertex pairs than this are pruned by bounding boxes.
 const PRUNE_ABOVE: usize = 256;
 
-/// A partial Step G (docs/algorithms/separator.md): the middle parts `P_i[p0..=p1]`, `Q_i[q0..=q1]`
-/// of two subchains that lie in opposite closed half-planes of the line through `a`, `c`, when the
-/// vertices outside them are the chains' ends and lie strictly on the wrong side (a subchain widened
-/// to the whole edge its cut falls in crosses the line there). The peeled end edges are scanned
-/// against the other chain in `O(|P_i| + |Q_i|)` each (cheaper than clipping them at constructed
-/// points, [`separation_of_gapped`]). `None` when no side assignment works. `sp`, `sq`: each vertex's side of the line. `O(|P_i| + |Q_i|)`.
+/// Step G's first route (docs/algorithms/separator.md): the middle parts `P_i[p0..=p1]`,
+/// `Q_i[q0..=q1]` of two subchains that lie in opposite closed half-planes of the line through `a`,
+/// `c`, when the vertices outside them are the chains' ends and lie strictly on the wrong side (a
+/// subchain widened to the whole edge its cut falls in crosses the line there). The peeled end
+/// edges are scanned against the other chain in `O(|P_i| + |Q_i|)` each (cheaper than clipping them
+/// at constructed points, [`separation_of_gapped`]). `None` when no side assignment works. `sp`,
+/// `sq`: each vertex's side of the line. `O(|P_i| + |Q_i|)`.
 fn peeled(sp: &[Orientation], sq: &[Orientation]) -> Option<((usize, usize), (usize, usize))> {
     let middle = |sides: &[Orientation], wrong: Orientation| {
         let bad = |s: &Orientation| *s == wrong;
