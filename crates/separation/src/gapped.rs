@@ -22,9 +22,7 @@ use crate::chain::Frames;
 use crate::envelope::prepare_runs;
 use crate::error::{Chain, SeparationError};
 use crate::frame::Frame;
-use crate::result::SeparationStats;
-use crate::sigma::{Cand, solve_prepared};
-use crate::site::Vertex;
+use crate::sigma::{Cand, nearest_adjacent, solve_prepared};
 
 /// Where a site of a gapped chain comes from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -255,19 +253,7 @@ fn on_the_line<K: Kernel>(p: &Gapped, q: &Gapped, frame: Frame) -> Option<Cand<S
         );
     }
     merge_sort_by(&mut all, &|x, y| frame.cmp_height::<K, _>(x.0, y.0));
-    let mut best: Option<Cand<Site>> = None;
-    for w in all.windows(2) {
-        let (x, y) = (w[0], w[1]);
-        if x.2 == y.2 {
-            continue;
-        }
-        let (u, v) = if x.2 { (x, y) } else { (y, x) };
-        let c = Cand::Vv(u.0, u.1, v.0, v.1);
-        if best.is_none_or(|b| Site::cmp_dist2::<K>(c.dist(), b.dist()) == Ordering::Less) {
-            best = Some(c);
-        }
-    }
-    best
+    nearest_adjacent::<K, Site>(&all)
 }
 
 /// A vertex–edge candidate between the subchains: vertex `j` of one (`p_side`: the edge is
@@ -339,7 +325,7 @@ fn unclip<K: Kernel>(
 /// Section 3 on the subchains `p`, `q` clipped to opposite closed half-planes of the line through
 /// `a`, `c`: `P` keeps the side opposite `wrong_p` (sides in `sp`, `sq` as `K::orient(a, c, ·)`),
 /// `Q` the other. The best candidate between the subchains (`None`: nothing of one subchain is on
-/// its side), with the work done. Parts that cannot hold a pair whose squared length is at most
+/// its side). Parts that cannot hold a pair whose squared length is at most
 /// `cut` are left out ([`clip_runs`]): the candidate is then some pair of the subchains when none
 /// beats the cut.
 ///
@@ -358,7 +344,7 @@ pub(crate) fn separation_of_gapped<K: Kernel>(
     (sp, sq): (&[Orientation], &[Orientation]),
     wrong_p: Orientation,
     cut: f64,
-) -> Result<Option<(Cand, SeparationStats)>, SeparationError> {
+) -> Result<Option<Cand>, SeparationError> {
     let wrong_q = wrong_p.reversed();
     let mut gp = clip_runs(p, sp, wrong_p, (a, c), cut);
     let mut gq = clip_runs(q, sq, wrong_q, (a, c), cut);
@@ -380,18 +366,15 @@ pub(crate) fn separation_of_gapped<K: Kernel>(
             .iter()
             .any(|s| !s.is_crossing() && f.depth_sign::<K, _>(*s) == Sign::Positive)
     };
-    let found = if off(&gp, frames.p) || off(&gq, frames.q) {
+    let best = if off(&gp, frames.p) || off(&gq, frames.q) {
         let pp = prepare_runs::<K, Site>(&gp.sites, &gp.runs, frames.p, Chain::P)?;
         let qq = prepare_runs::<K, Site>(&gq.sites, &gq.runs, frames.q, Chain::Q)?;
-        let (best, stats) = solve_prepared::<K, Site>(pp, qq, frames, on_line)?;
-        (best, stats)
+        solve_prepared::<K, Site>(pp, qq, frames, on_line)?.0
     } else {
         // Both clipped chains lie on the line: the on-line pair is the answer.
-        let best = on_line.ok_or(SeparationError::Inconsistent)?;
-        (best, SeparationStats::default())
+        on_line.ok_or(SeparationError::Inconsistent)?
     };
-    let (best, stats) = found;
-    Ok(unclip::<K>(p, q, &gp, &gq, best).map(|c| (c, stats)))
+    Ok(unclip::<K>(p, q, &gp, &gq, best))
 }
 
 #[cfg(test)]
@@ -447,7 +430,7 @@ mod tests {
             )
             .unwrap();
             let calls = predicate_counts().total() as f64;
-            let (cand, _) = found.expect("both combs reach across the axis");
+            let cand = found.expect("both combs reach across the axis");
             // The nearest pairs are a tooth side of each at distance 1.
             assert_eq!(
                 Robust::cmp_dist2(cand.dist(), Dist2::PointPoint(DVec2::ZERO, DVec2::X)),

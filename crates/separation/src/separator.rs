@@ -1603,7 +1603,7 @@ fn execute<K: Kernel>(
         for &wrong_p in &jobs.gapped {
             let found = separation_of_gapped::<K>(p, q, (a, c), (sp, sq), wrong_p, cut).ok()?;
             stats.subproblem_parts_gapped += 1;
-            if let Some((cand, _)) = found {
+            if let Some(cand) = found {
                 let pair = build_pair::<K>(cand);
                 out.push((pair.feature_p, pair.feature_q, Ok(pair)));
             }
@@ -2888,7 +2888,7 @@ mod tests {
                     Err(_) if !exact => continue,
                     Err(e) => panic!("seed {seed}: {e:?}"),
                 };
-                let Some((cand, _)) = found else { continue };
+                let Some(cand) = found else { continue };
                 let pair = build_pair::<K>(cand);
                 let d = dist_of(&pc, &qc, pair.feature_p, pair.feature_q);
                 if !exact {

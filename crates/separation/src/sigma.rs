@@ -250,19 +250,24 @@ fn on_the_line<K: Kernel>(p: &[DVec2], q: &[DVec2], on_line: &OnLine) -> Option<
             .total_cmp(&(y.0.x + 0.0))
             .then((x.0.y + 0.0).total_cmp(&(y.0.y + 0.0)))
     });
-    let mut best: Option<Cand> = None;
-    for w in all.windows(2) {
+    nearest_adjacent::<K, DVec2>(&all)
+}
+
+/// The nearest pair of a `P` point and a `Q` point among points of one line sorted along it, each
+/// with its index and whether it is `P`'s: the nearest such pair is adjacent in that order (the
+/// first of equally near ones). `O(k)` exact distance comparisons.
+pub(crate) fn nearest_adjacent<K: Kernel, V: Vertex>(
+    sorted: &[(V, usize, bool)],
+) -> Option<Cand<V>> {
+    let mut best: Option<Cand<V>> = None;
+    for w in sorted.windows(2) {
         let (x, y) = (w[0], w[1]);
         if x.2 == y.2 {
             continue;
         }
-        let ((vp, i), (vq, j)) = if x.2 {
-            ((x.0, x.1), (y.0, y.1))
-        } else {
-            ((y.0, y.1), (x.0, x.1))
-        };
-        let c = Cand::Vv(vp, i, vq, j);
-        if best.is_none_or(|b| K::cmp_dist2(c.dist(), b.dist()) == Ordering::Less) {
+        let (u, v) = if x.2 { (x, y) } else { (y, x) };
+        let c = Cand::Vv(u.0, u.1, v.0, v.1);
+        if best.is_none_or(|b| V::cmp_dist2::<K>(c.dist(), b.dist()) == Ordering::Less) {
             best = Some(c);
         }
     }
