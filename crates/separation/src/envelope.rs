@@ -840,22 +840,8 @@ pub(crate) fn prepare<K: Kernel, V: Vertex>(
     let s = Ctx::new(frame, &cl, &sheared, true);
     let c = Ctx::new(frame, &cl, &lohi, false);
     let (nodes, edges) = scan::<K, V>(&s, m).map_err(|w| c.bad(w, which))?;
-    // Collapse the nodes at one true height to the first (the nearest): the edge below the
-    // group is the one below its first node, the edge above it the one above its last.
     let mut level = Level::with_capacity(nodes.len() + 2);
-    for (k, &u) in nodes.iter().enumerate() {
-        let gap = edges.get(k).copied();
-        let same =
-            k > 0 && c.frame.cmp_height::<K, _>(c.v[nodes[k - 1]], c.v[u]) == Ordering::Equal;
-        if same {
-            if let Some(last) = level.bps.last_mut() {
-                last.gap = gap;
-            }
-        } else {
-            level.push(u, At::Vertex(u), gap);
-        }
-    }
-    level.close(0);
+    collapse::<K, V>(&c, &nodes, &edges, 0, &mut level);
     // A closed chain has as many edges as vertices, its closing edge (`m − 1` → 0) last.
     if m == 0 || cl.edges.len() != m {
         return to_prepared::<K, V>(&c, &cl, level.env(0), which, false);
@@ -866,6 +852,33 @@ pub(crate) fn prepare<K: Kernel, V: Vertex>(
     let mut out = Level::with_capacity(level.bps.len());
     merge::<K, V>(&c, level.env(0), level.env(1), &mut out).map_err(|w| c.bad(w, which))?;
     to_prepared::<K, V>(&c, &cl, out.env(0), which, false)
+}
+
+/// Appends the walk's nodes (`nodes`, with the edge above each in `edges`), offset by `off` into
+/// the chain's positions, as one envelope of `level`, the nodes at one true height collapsed to
+/// the first (the nearest): the edge below the group is the one below its first node, the edge
+/// above it the one above its last. `O(nodes)` degree-2 tests.
+fn collapse<K: Kernel, V: Vertex>(
+    c: &Ctx<'_, V>,
+    nodes: &[usize],
+    edges: &[usize],
+    off: usize,
+    level: &mut Level,
+) {
+    let start = level.bps.len();
+    for (k, &u) in nodes.iter().enumerate() {
+        let (u, gap) = (u + off, edges.get(k).map(|&e| e + off));
+        let same =
+            k > 0 && c.frame.cmp_height::<K, _>(c.v[nodes[k - 1] + off], c.v[u]) == Ordering::Equal;
+        if same {
+            if let Some(last) = level.bps.last_mut() {
+                last.gap = gap;
+            }
+        } else {
+            level.push(u, At::Vertex(u), gap);
+        }
+    }
+    level.close(start);
 }
 
 /// Lemma 2 for a chain clipped to its half-plane: the runs `runs` (inclusive position ranges of
@@ -913,21 +926,7 @@ pub(crate) fn prepare_runs<K: Kernel, V: Vertex>(
             lex: true,
         };
         let (nodes, edges) = scan::<K, V>(&sc, t + 1 - s).map_err(|w| c.bad(w + s, which))?;
-        // Collapsed as in [`prepare`], in the chain's positions.
-        let start = level.bps.len();
-        for (k, &u) in nodes.iter().enumerate() {
-            let (u, gap) = (u + s, edges.get(k).map(|&e| e + s));
-            let same = k > 0
-                && c.frame.cmp_height::<K, _>(c.v[nodes[k - 1] + s], c.v[u]) == Ordering::Equal;
-            if same {
-                if let Some(last) = level.bps.last_mut() {
-                    last.gap = gap;
-                }
-            } else {
-                level.push(u, At::Vertex(u), gap);
-            }
-        }
-        level.close(start);
+        collapse::<K, V>(&c, &nodes, &edges, s, &mut level);
     }
     // Balanced merging: each round halves the number of envelopes.
     while level.segs.len() > 1 {
