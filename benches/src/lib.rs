@@ -5,7 +5,7 @@
 use std::f64::consts::TAU;
 
 use glam::DVec2;
-use polydist_oracle::{Contact, SplitMix64, contact_status_convex, star};
+use polydist_oracle::{Contact, SplitMix64, contact_status_convex, star_in_range};
 use polydist_polygon::SimplePolygon;
 use polydist_polygon::predicates::Robust;
 use polydist_separation::intersection;
@@ -56,18 +56,25 @@ pub fn interlocked_spirals(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
 /// Two random stars (`polydist_oracle::star`: integer directions, every fourth vertex a spike 8 to
 /// 64 times farther out), `n/2` vertices each, the second moved until the two are disjoint while
 /// their hulls meet: spikes in each other's notches. The lines of their separators pass through
-/// many spikes, so some subproblems cross their line too often for `split` and are scanned whole
-/// (`docs/algorithms/separator.md`, the quadratic case). The first seed and placement (32 a seed:
-/// a random direction, the centres 30 to 90 % of the sum of the radii apart) that interlocks.
-/// Up to about 131,072 vertices (beyond, the stars' random directions start to repeat).
+/// many spikes, so some subproblems cross their line too often for pairs of runs and go to section 3
+/// on clipped chains (Step G, `docs/algorithms/separator.md`). The first seed and placement (32 a
+/// seed: a random direction, the centres 30 to 90 % of the sum of the radii apart) that interlocks.
+/// Up to 131,072 vertices the directions come from `[−2^16, 2^16]²` (`star`); beyond, two random
+/// directions of one angle (which fail a draw) become likely there, so the range grows with `n`
+/// (`star_in_range`, one bit per doubling and two to spare): the same shape, other draws.
 pub fn interlocked_stars(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
     let half = (n / 2).max(8);
+    let bits = if half <= 1 << 16 {
+        16
+    } else {
+        18 + (half - 1).ilog2() - 15
+    };
     let radius = |v: &[DVec2]| v.iter().map(|x| x.length()).fold(0.0, f64::max);
     (0u64..)
         .find_map(|seed| {
             let mut rng = SplitMix64::new(seed);
-            let p = star(&mut rng, half, half / 4);
-            let q = star(&mut rng, half, half / 4);
+            let p = star_in_range(&mut rng, half, half / 4, bits);
+            let q = star_in_range(&mut rng, half, half / 4, bits);
             let sp = SimplePolygon::try_new(&p).ok()?;
             (0..32).find_map(|_| {
                 let t = 0.3 + 0.6 * rng.unit_f64();

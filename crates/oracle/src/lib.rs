@@ -46,7 +46,7 @@
 //! oracle: [`random_convex`], [`random_convex_lattice`], [`cocircular`],
 //! [`cocircular_perturbed`], [`sliver`], [`parallel_facing`],
 //! [`with_gap_ulps`], [`offset`] / [`offset_family`] / [`OFFSETS`], [`collinear_triples`],
-//! [`near_collinear`], [`short_dyadic`], [`star`], [`comb`],
+//! [`near_collinear`], [`short_dyadic`], [`star`] / [`star_in_range`], [`comb`],
 //! [`interleaved_combs`], [`interleaved_combs_ulps`], [`spiral`],
 //! [`two_opt`], [`pocket_pair`], [`pocket_around`], [`convex_pair`] with [`Relation`]; large
 //! pairs rebuilt bit for bit from a fixture's `gen` line, without library
@@ -108,7 +108,7 @@ pub use crate::generators::precision::{
 pub use crate::generators::rng::SplitMix64;
 pub use crate::generators::simple::{
     CombPair, PocketLid, PocketPair, comb, interleaved_combs, interleaved_combs_ulps,
-    pocket_around, pocket_pair, sawteeth_facing, sawtooth, spiral, star, two_opt,
+    pocket_around, pocket_pair, sawteeth_facing, sawtooth, spiral, star, star_in_range, two_opt,
 };
 pub use crate::hard::{HardAnswers, SimpleHardAnswers};
 pub use crate::hausdorff::{

@@ -13,7 +13,7 @@ use polydist_oracle::{
     is_convex, is_simple, is_strictly_convex, near_collinear, offset, offset_family,
     parallel_facing, pocket_around, pocket_pair, point_in_polygon, random_convex,
     random_convex_lattice, rat, short_dyadic, sign_orient, signed_area, sliver, spiral, star,
-    step_ulps, two_opt, with_gap_ulps,
+    star_in_range, step_ulps, two_opt, with_gap_ulps,
 };
 
 fn v(x: f64, y: f64) -> DVec2 {
@@ -460,6 +460,30 @@ fn star_guarantees() {
         }
     }
     assert!(non_convex >= 8, "{non_convex}");
+}
+
+#[test]
+fn star_in_range_guarantees() {
+    // `bits = 16` is `star`, draw for draw.
+    for seed in 0..20u64 {
+        let (mut a, mut b) = (SplitMix64::new(seed), SplitMix64::new(seed));
+        let n = 3 + (seed as usize) % 40;
+        assert_eq!(star(&mut a, n, n / 4), star_in_range(&mut b, n, n / 4, 16));
+        assert_eq!(a.next_u64(), b.next_u64(), "the same draws consumed");
+    }
+    // Other ranges: simple, ccw, around the origin, the same size as `star` (every coordinate
+    // at most 1 in magnitude, the spikes reaching past 1/2 when their directions are long).
+    let mut rng = SplitMix64::new(107);
+    for bits in [6u32, 8, 20, 30, 40] {
+        for n in [3usize, 7, 40] {
+            let p = star_in_range(&mut rng, n, n / 3, bits);
+            assert_eq!(p.len(), n);
+            assert!(is_simple(&p), "bits={bits} n={n}");
+            assert!(ccw(&p));
+            assert_eq!(point_in_polygon(DVec2::ZERO, &p), Location::Inside);
+            assert!(p.iter().all(|v| v.x.abs() <= 1.0 && v.y.abs() <= 1.0));
+        }
+    }
 }
 
 #[test]

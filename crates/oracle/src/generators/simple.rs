@@ -26,9 +26,22 @@ const MAX_ATTEMPTS: usize = 10_000;
 /// # Panics
 /// Panics if `n < 3` or `spikes > n`.
 pub fn star(rng: &mut SplitMix64, n: usize, spikes: usize) -> Vec<DVec2> {
+    star_in_range(rng, n, spikes, 16)
+}
+
+/// [`star`] with directions drawn from `[−2^bits, 2^bits]²` instead of `bits = 16` (which
+/// [`star`] uses, draw for draw), and the result scaled by `2^−(bits + 8)`, so the star keeps the
+/// same size. Two random directions of the same angle make a draw fail, and with `n` directions
+/// about `n² / 2^(2·bits)` pairs do: beyond some 100,000 vertices `bits = 16` fails nearly every
+/// draw, and a wider range keeps large stars cheap to generate.
+///
+/// # Panics
+/// Panics if `n < 3`, `spikes > n`, or `bits` is not in `1..=40`.
+pub fn star_in_range(rng: &mut SplitMix64, n: usize, spikes: usize, bits: u32) -> Vec<DVec2> {
     assert!(n >= 3, "star: n >= 3");
     assert!(spikes <= n, "star: spikes <= n");
-    let r: i64 = 1 << 16;
+    assert!((1..=40).contains(&bits), "star: bits in 1..=40");
+    let r: i64 = 1 << bits;
     for _ in 0..MAX_ATTEMPTS {
         let mut dirs: Vec<L> = (0..n)
             .map(|_| (rng.range_i64(-r, r), rng.range_i64(-r, r)))
@@ -56,7 +69,7 @@ pub fn star(rng: &mut SplitMix64, n: usize, spikes: usize) -> Vec<DVec2> {
         let mut pts = pts;
         let k = rng.index(n);
         pts.rotate_left(k);
-        return to_world(&pts, -24);
+        return to_world(&pts, -(bits as i32) - 8);
     }
     panic!("star: failed to draw directions");
 }
