@@ -476,7 +476,7 @@ impl Near {
     /// box lies wholly on one side of the line, before `l_i`'s start or after its end, by at least
     /// that much at each corner (and so everywhere in it: each is a half-plane). `0` when no such
     /// bound is certain. At most twenty [`quotient_bounds`].
-    fn box_gap2(&self, lo: DVec2, hi: DVec2) -> f64 {
+    pub(crate) fn box_gap2(&self, lo: DVec2, hi: DVec2) -> f64 {
         let corners = [lo, DVec2::new(hi.x, lo.y), DVec2::new(lo.x, hi.y), hi];
         let d = self.c - self.a;
         // The least lower bound over the corners of a quantity that must have the sign `want` at

@@ -30,8 +30,8 @@ use polydist_polygon::{Feature, SimplePolygon, convex_hull_of_two_with};
 #[cfg(test)]
 use crate::brute::separation_brute;
 use crate::brute::{
-    Near, Seen, Winner, cmp_scan, farther_from_line_than, scan_pruned_winner_below,
-    scan_winner_below_except, upper_bound,
+    Near, Seen, Winner, boxes_farther_than, cmp_scan, farther_from_line_than,
+    scan_pruned_winner_below, scan_winner_below_except, upper_bound,
 };
 use crate::error::SeparationError;
 use crate::gapped::separation_of_gapped;
@@ -1219,7 +1219,8 @@ fn dist_of(p: &[DVec2], q: &[DVec2], fp: Feature, fq: Feature) -> Dist2 {
 /// Each subproblem of more than [`SCAN_BELOW`] vertex pairs is given to section 3
 /// ([`separation_of_chains`]) across the line of its run, in the parts [`split`] hands it (peeled
 /// ends, or runs for both assignments of sides, the rest scanned in linear time, or the subchains
-/// clipped to the line, [`separation_of_gapped`]). Small subproblems, and any that section 3
+/// clipped to the line, [`separation_of_gapped`]). Small subproblems, thin ones (a subchain of at
+/// most [`THIN`] vertices: linear), and any that section 3
 /// rejects (only under the Fast kernel in our tests), are scanned exactly in `O(|P_i| · |Q_i|)`,
 /// pruned by bounding boxes when large. A `Q` subchain that spans the region's gap (a pocket's lid,
 /// no part of `Q`) is split there.
@@ -1369,6 +1370,15 @@ fn solve_pass<K: Kernel>(
             let Some((qlo, qhi)) = shallow::<K>(qlo, qhi, |k| r.ring[k], a, c, trim) else {
                 continue;
             };
+            // Ends far from the other subchain's box or from `l_i` cannot hold a better pair
+            // either (not when every subproblem is offered whole to section 3, so that the tests
+            // reach Step G on the stars: this trim leaves it little).
+            let ends = if scan_below > 0 { trim } else { f64::INFINITY };
+            let Some(((plo, phi), (qlo, qhi))) =
+                near_ends(at_p, |k| r.ring[k], (plo, phi), (qlo, qhi), &near, ends)
+            else {
+                continue;
+            };
             pcv.clear();
             pcv.extend((plo..=phi).map(at_p));
             qcv.clear();
@@ -1407,7 +1417,10 @@ fn solve_pass<K: Kernel>(
                 }
             };
             // Small subproblems are scanned: section 3's set-up costs more than the few pairs.
-            let jobs = if pcv.len() * qcv.len() <= scan_below {
+            // So are thin ones (one subchain of at most `THIN` vertices), in linear time: about
+            // `3·THIN` candidates a vertex of the other, cheaper than section 3's work a vertex.
+            let thin = scan_below > 0 && pcv.len().min(qcv.len()) <= THIN;
+            let jobs = if thin || pcv.len() * qcv.len() <= scan_below {
                 None
             } else {
                 Some(split::<K>(&pcv, &qcv, a, c))
@@ -1494,6 +1507,51 @@ fn shallow<K: Kernel>(
         at_hi = prev;
     }
     (lo < hi || at_lo.is_none()).then_some((lo, hi))
+}
+
+/// The subchains `P_i = p..` and `Q_i = q..` (positions; `at_p`, `at_q` give the vertices) without
+/// their end edges whose every point lies certainly farther than `√cut` from every point of the other
+/// subchain (the edge's box against the other's bounding box) or from `l_i` (the box against
+/// [`Near`]): a pair that Lemma 1 assigns to the subproblem meets `l_i` (notes 4.8), so neither of its
+/// points is farther from the other, or from `l_i`, than its length, and none on such an edge beats a
+/// distance whose square is at most `cut`. `P_i` is trimmed first, against `Q_i`'s box, then `Q_i`
+/// against what is left of `P_i`. Subchains stay contiguous. `None` when one subchain has nothing
+/// left. Coordinate comparisons and the scans' filter bounds, no predicate;
+/// `O(|P_i| + |Q_i|)` for the boxes, only when `cut` is finite.
+fn near_ends(
+    at_p: impl Fn(usize) -> DVec2,
+    at_q: impl Fn(usize) -> DVec2,
+    p: (usize, usize),
+    q: (usize, usize),
+    near: &impl Fn() -> Near,
+    cut: f64,
+) -> Option<((usize, usize), (usize, usize))> {
+    if !cut.is_finite() {
+        return Some((p, q));
+    }
+    let near = near();
+    let bbox = |at: &dyn Fn(usize) -> DVec2, (lo, hi): (usize, usize)| {
+        (lo..=hi)
+            .map(at)
+            .fold((at(lo), at(lo)), |(l, h), v| (l.min(v), h.max(v)))
+    };
+    let trim = |at: &dyn Fn(usize) -> DVec2, (mut lo, mut hi): (usize, usize), other| {
+        let far = |k: usize, l: usize| {
+            let (u, w) = (at(k), at(l));
+            let b = (u.min(w), u.max(w));
+            boxes_farther_than(b, other, cut) || near.box_gap2(b.0, b.1) > cut
+        };
+        while lo < hi && far(lo, lo + 1) {
+            lo += 1;
+        }
+        while hi > lo && far(hi - 1, hi) {
+            hi -= 1;
+        }
+        (lo < hi || !far(lo, lo)).then_some((lo, hi))
+    };
+    let p = trim(&at_p, p, bbox(&at_q, q))?;
+    let q = trim(&at_q, q, bbox(&at_p, p))?;
+    Some((p, q))
 }
 
 /// The `Q` subchain `qlo..=qhi` (ring positions) trimmed to the edges with an end in the pass's
@@ -1746,6 +1804,9 @@ fn runs(sides: &[Orientation], wrong: Orientation) -> Option<Runs> {
 
 /// Subproblems with at most this many vertex pairs are scanned without trying section 3.
 const SCAN_BELOW: usize = 256;
+/// Subproblems one of whose subchains has at most this many vertices are scanned without trying
+/// section 3 (`O(THIN · (|P_i| + |Q_i|))`; not when every subproblem is offered to section 3).
+const THIN: usize = 8;
 /// Scans of more vertex pairs than this are pruned by bounding boxes.
 const PRUNE_ABOVE: usize = 256;
 
@@ -2372,6 +2433,58 @@ mod tests {
             Ok(Ok(_)) => Some((p, q)),
             _ => None,
         }
+    }
+
+    /// Two random stars of 400 vertices (a spike every fourth) pushed into each other, solved with
+    /// every subproblem offered whole to section 3: their separators' lines pass through many
+    /// spikes, so some subproblems cross their line too often for pairs of runs and go to section
+    /// 3 on the subchains clipped to the line (Step G), end to end; `σ` as the brute force's,
+    /// under Robust and Exact. (As shipped, [`near_ends`] trims most of those crossings away
+    /// first.)
+    #[test]
+    fn interlocked_stars_reach_clipped_chains() {
+        let (mut cases, mut gapped) = (0, 0);
+        for seed in 0..12u64 {
+            let mut rng = SplitMix64::new(seed);
+            let a = polydist_oracle::star(&mut rng, 400, 100);
+            let b0 = polydist_oracle::star(&mut rng, 400, 100);
+            let radius = |v: &[DVec2]| v.iter().map(|x| x.length()).fold(0.0, f64::max);
+            let p = poly(&a);
+            for _ in 0..32 {
+                let t = 0.3 + 0.6 * rng.unit_f64();
+                let ang = core::f64::consts::TAU * rng.unit_f64();
+                let d = DVec2::new(ang.cos(), ang.sin()) * (radius(&a) + radius(&b0)) * t;
+                let q = poly(&b0.iter().map(|&v| v + d).collect::<Vec<_>>());
+                if crate::polygon::intersection::<Robust>(&p, &q).is_some() {
+                    continue;
+                }
+                let Ok(Some(plan)) = build::<Robust>(&p, &q) else {
+                    continue;
+                };
+                cases += 1;
+                let brute = separation_brute::<Robust>(&closed_chain(&p), &closed_chain(&q))
+                    .expect("valid chains");
+                let (vp, vq) = (p.vertices(), q.vertices());
+                let want = dist_of(vp, vq, brute.feature_p, brute.feature_q);
+                let (pair, stats) = solve_with::<Robust>(&p, &q, &plan, 0).unwrap();
+                gapped += stats.subproblem_parts_gapped;
+                let got = dist_of(vp, vq, pair.feature_p, pair.feature_q);
+                assert_eq!(Robust::cmp_dist2(got, want), Ordering::Equal, "seed {seed}");
+                let plan = build::<Exact>(&p, &q).unwrap().unwrap();
+                let (pair, _) = solve_with::<Exact>(&p, &q, &plan, 0).unwrap();
+                let got = dist_of(vp, vq, pair.feature_p, pair.feature_q);
+                assert_eq!(
+                    Exact::cmp_dist2(got, want),
+                    Ordering::Equal,
+                    "seed {seed}, Exact"
+                );
+                break;
+            }
+        }
+        assert!(
+            cases >= 6 && gapped >= 2,
+            "{cases} cases, {gapped} gapped parts"
+        );
     }
 
     #[test]
