@@ -1427,9 +1427,10 @@ fn solve_pass<K: Kernel>(
             };
             // A large part that goes to section 3 on clipped chains, or is scanned (pruned:
             // [`scan_part`]'s test), waits when deferring: the best answer of all the others then
-            // trims it (only its parts near the line can beat that).
+            // trims it (only its parts near the line can beat that). A thin scan is linear and
+            // goes first: its answer is a cut for the others.
             let large = pcv.len() * qcv.len() > PRUNE_ABOVE;
-            if large && jobs.as_ref().is_none_or(|j| !j.gapped.is_empty()) {
+            if large && !thin && jobs.as_ref().is_none_or(|j| !j.gapped.is_empty()) {
                 if let Pick::Defer(later) = &mut pick {
                     later.push((i, part));
                     continue;
@@ -1511,13 +1512,15 @@ fn shallow<K: Kernel>(
 
 /// The subchains `P_i = p..` and `Q_i = q..` (positions; `at_p`, `at_q` give the vertices) without
 /// their end edges whose every point lies certainly farther than `√cut` from every point of the other
-/// subchain (the edge's box against the other's bounding box) or from `l_i` (the box against
+/// subchain (the box of the edges, tried [`NEAR_BOXES`] at a time and then one at a time, against
+/// the boxes of [`NEAR_BOXES`] consecutive stretches of the other) or from `l_i` (the box against
 /// [`Near`]): a pair that Lemma 1 assigns to the subproblem meets `l_i` (notes 4.8), so neither of its
 /// points is farther from the other, or from `l_i`, than its length, and none on such an edge beats a
 /// distance whose square is at most `cut`. `P_i` is trimmed first, against `Q_i`'s box, then `Q_i`
 /// against what is left of `P_i`. Subchains stay contiguous. `None` when one subchain has nothing
 /// left. Coordinate comparisons and the scans' filter bounds, no predicate;
-/// `O(|P_i| + |Q_i|)` for the boxes, only when `cut` is finite.
+/// `O(|P_i| + |Q_i|)` for the boxes and `O(NEAR_BOXES)` tests per trimmed stretch or edge, only when
+/// `cut` is finite.
 fn near_ends(
     at_p: impl Fn(usize) -> DVec2,
     at_q: impl Fn(usize) -> DVec2,
@@ -1530,27 +1533,40 @@ fn near_ends(
         return Some((p, q));
     }
     let near = near();
-    let bbox = |at: &dyn Fn(usize) -> DVec2, (lo, hi): (usize, usize)| {
-        (lo..=hi)
-            .map(at)
-            .fold((at(lo), at(lo)), |(l, h), v| (l.min(v), h.max(v)))
+    // The boxes of up to `NEAR_BOXES` consecutive stretches of a subchain (each holds its
+    // stretch's vertices and the edges between them; consecutive stretches share a vertex).
+    let boxes = |at: &dyn Fn(usize) -> DVec2, (lo, hi): (usize, usize)| {
+        let step = (hi - lo).div_ceil(NEAR_BOXES).max(1);
+        (lo..hi.max(lo + 1))
+            .step_by(step)
+            .map(|s| {
+                (s..=(s + step).min(hi))
+                    .map(at)
+                    .fold((at(s), at(s)), |(l, h), v| (l.min(v), h.max(v)))
+            })
+            .collect::<Vec<_>>()
     };
-    let trim = |at: &dyn Fn(usize) -> DVec2, (mut lo, mut hi): (usize, usize), other| {
+    let trim = |at: &dyn Fn(usize) -> DVec2, (mut lo, mut hi): (usize, usize), other: Vec<_>| {
+        // Whether the stretch `k..=l` (its box) is certainly too far.
         let far = |k: usize, l: usize| {
-            let (u, w) = (at(k), at(l));
-            let b = (u.min(w), u.max(w));
-            boxes_farther_than(b, other, cut) || near.box_gap2(b.0, b.1) > cut
+            let b = (k..=l)
+                .map(at)
+                .fold((at(k), at(k)), |(lo, hi), v| (lo.min(v), hi.max(v)));
+            other.iter().all(|&o| boxes_farther_than(b, o, cut)) || near.box_gap2(b.0, b.1) > cut
         };
-        while lo < hi && far(lo, lo + 1) {
-            lo += 1;
-        }
-        while hi > lo && far(hi - 1, hi) {
-            hi -= 1;
+        // Whole stretches of `NEAR_BOXES` edges first, then single edges.
+        for step in [NEAR_BOXES, 1] {
+            while lo + step <= hi && far(lo, lo + step) {
+                lo += step;
+            }
+            while hi >= lo + step && far(hi - step, hi) {
+                hi -= step;
+            }
         }
         (lo < hi || !far(lo, lo)).then_some((lo, hi))
     };
-    let p = trim(&at_p, p, bbox(&at_q, q))?;
-    let q = trim(&at_q, q, bbox(&at_p, p))?;
+    let p = trim(&at_p, p, boxes(&at_q, q))?;
+    let q = trim(&at_q, q, boxes(&at_p, p))?;
     Some((p, q))
 }
 
@@ -1804,6 +1820,9 @@ fn runs(sides: &[Orientation], wrong: Orientation) -> Option<Runs> {
 
 /// Subproblems with at most this many vertex pairs are scanned without trying section 3.
 const SCAN_BELOW: usize = 256;
+/// Boxes of the other subchain that [`near_ends`] tests an end against, and the edges it tries
+/// to trim at once before single edges.
+const NEAR_BOXES: usize = 16;
 /// Subproblems one of whose subchains has at most this many vertices are scanned without trying
 /// section 3 (`O(THIN · (|P_i| + |Q_i|))`; not when every subproblem is offered to section 3).
 const THIN: usize = 8;
