@@ -8,6 +8,10 @@
 //!   of the other: the closest hull features are lids, and both facing chains are monotone along
 //!   the separating line, so the monotone sweep answers (section 3 in `query_robust_section3`; the
 //!   others mostly end at the hull shortcut);
+//! - `polygons/hooked_teeth`: the same slabs with hooked teeth (each tip overhangs the notch behind
+//!   it, `polydist_oracle::hooked_teeth_facing`): neither facing chain is monotone along the
+//!   separating line, so the monotone sweep declines and section 3 answers, by its envelope sweep
+//!   (Lemma 2's envelopes are monotone; `query_robust_section3` runs its matrices instead);
 //! - `polygons/interlocked_combs`: two combs whose teeth interleave, clearance 1/8: the hulls meet,
 //!   so the query goes through Amato's separator (triangulation of the region between the facing
 //!   chains, geodesic, extensions, greedy pruning, subchains). Every clearance ties exactly;
@@ -36,8 +40,8 @@
 //! - `query_fast`, `query_robust`, `query_exact`: `separation_of_disjoint::<K>` (the query alone;
 //!   Exact up to 4,096);
 //! - `query_robust_section3`: the same with `HullRouteMethod::Section3`: the disjoint-hull route
-//!   without the monotone sweep (section 3 wherever the hull features do not answer), so the
-//!   sweep's gain and the paper's algorithm's own cost can be read apart;
+//!   without the monotone and envelope sweeps (section 3's matrices wherever the hull features do
+//!   not answer), so the sweeps' gain and the paper's algorithm's own cost can be read apart;
 //! - `brute_robust`: `polygon_separation_brute::<Robust>` (`Θ(nm)`, up to 4,096);
 //! - `parry_query`: parry2d-f64 `query::distance` between two prebuilt closed `Polyline`s (BVH);
 //! - `parry_build_query`: building both polylines and the query;
@@ -58,8 +62,8 @@ use parry2d_f64::math::{Pose, Vector};
 use parry2d_f64::query;
 use parry2d_f64::shape::Polyline;
 use polydist_benches::{
-    interlocked_combs, interlocked_combs_jittered, interlocked_spirals, interlocked_stars, pocket,
-    sawteeth,
+    hooked_teeth, interlocked_combs, interlocked_combs_jittered, interlocked_spirals,
+    interlocked_stars, pocket, sawteeth,
 };
 use polydist_oracle::SplitMix64;
 use polydist_polygon::SimplePolygon;
@@ -354,6 +358,7 @@ fn benches() {
     run(&mut c, "polygons/spirals", spirals, usize::MAX);
     run(&mut c, "polygons/combs", combs, usize::MAX);
     run(&mut c, "polygons/sawteeth", sawteeth, usize::MAX);
+    run(&mut c, "polygons/hooked_teeth", hooked_teeth, usize::MAX);
     run(
         &mut c,
         "polygons/interlocked_combs",

@@ -5,19 +5,20 @@
 //! `cargo run --release -p polydist-benches --example separation_profile -- <family> <N> <runs> <kernels>`
 //! with family `combs` (interlocked, every clearance tied), `jit` (the same, jittered), `pocket` (a
 //! star in a C's pocket, the containing case), `spir` (two interlocked spiral arms), `istar` (two random stars
-//! pushed into each other), `saw` (saw-teeth tip to notch, section 3), `dec` (the tied
-//! combs scaled by 0.1: decimal coordinates, whose ties the error-free stage cannot settle), and kernels any of `r` (Robust), `f` (Fast) and `g` (geo's
+//! pushed into each other), `saw` (saw-teeth tip to notch, the monotone sweep), `hook` (hooked
+//! saw-teeth tip to notch: facing chains not monotone, section 3), `dec` (the tied
+//! combs scaled by 0.1: decimal coordinates, whose ties the error-free stage cannot settle), and kernels any of `r` (Robust), `s` (Robust, section 3's matrices only), `f` (Fast) and `g` (geo's
 //! distance, once per run, for sizes its criterion series skips) (default `combs 131072 5 rf`).
 //! Figures only; the benchmarks are the reference.
 
 use glam::DVec2;
 use polydist_benches::{
-    interlocked_combs, interlocked_combs_jittered, interlocked_spirals, interlocked_stars, pocket,
-    sawteeth,
+    hooked_teeth, interlocked_combs, interlocked_combs_jittered, interlocked_spirals,
+    interlocked_stars, pocket, sawteeth,
 };
 use polydist_polygon::SimplePolygon;
 use polydist_predicates::{Fast, Robust};
-use polydist_separation::separation_of_disjoint;
+use polydist_separation::{HullRouteMethod, separation_of_disjoint, separation_of_disjoint_with};
 use std::time::Instant;
 
 fn main() {
@@ -32,6 +33,7 @@ fn main() {
         "spir" => interlocked_spirals(n),
         "istar" => interlocked_stars(n),
         "saw" => sawteeth(n),
+        "hook" => hooked_teeth(n),
         "dec" => {
             let (a, b) = interlocked_combs(n);
             let s = |v: Vec<DVec2>| v.into_iter().map(|p| p * 0.1).collect();
@@ -48,6 +50,9 @@ fn main() {
             let r = separation_of_disjoint::<Robust>(&p, &q).unwrap();
             let el = t.elapsed();
             println!("{which} {n}: robust {el:?} d={}", r.distance());
+            if let polydist_separation::PolygonSeparation::Separated { route, .. } = &r {
+                println!("  {route:?}");
+            }
             if let polydist_separation::PolygonSeparation::Separated { stats, .. } = &r {
                 println!("  {stats:?}");
             }
@@ -66,6 +71,17 @@ fn main() {
             let t = Instant::now();
             let d = Euclidean.distance(&gp, &gq);
             println!("{which} {n}: geo {:?} d={d}", t.elapsed());
+        }
+        if kern.contains('s') {
+            // The disjoint-hull route with section 3's matrices only (the paper's algorithm).
+            let t = Instant::now();
+            let r =
+                separation_of_disjoint_with::<Robust>(&p, &q, HullRouteMethod::Section3).unwrap();
+            println!(
+                "{which} {n}: robust section 3 {:?} d={}",
+                t.elapsed(),
+                r.distance()
+            );
         }
         if kern.contains('f') {
             let t = Instant::now();

@@ -119,6 +119,13 @@ pub fn pocket(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
     (star, c)
 }
 
+/// Two hooked saw-tooth slabs facing each other (`polydist_oracle::hooked_teeth_facing`, `N/6`
+/// teeth each): disjoint hulls whose facing chains are not monotone along the separating line, so
+/// the disjoint-hull route goes to section 3.
+pub fn hooked_teeth(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
+    polydist_oracle::hooked_teeth_facing((n / 6).max(1))
+}
+
 /// A slab `[0, 4] × [0, h]` with `t` saw teeth on its right side (tips at `x = 5`), and its mirror
 /// image right of it, shifted by half a tooth so that tips face notches, `1/4` beyond the tips.
 pub fn sawteeth(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {

@@ -488,6 +488,43 @@ pub fn sawtooth(t: usize) -> Vec<DVec2> {
     p
 }
 
+/// [`sawtooth`] with hooked teeth: each tooth runs from its base `(4, y)` out to its tip
+/// `(5, y + 1.4)`, then back down and in to `(4.6, y + 1.2)` (an overhang: the boundary runs
+/// backwards along `y` there) and on to the next base `(4, y + 2)`. Counter-clockwise, simple, exact
+/// in binary up to the decimal tips (all coordinates are the nearest doubles of the figures).
+///
+/// # Panics
+/// Panics if `t` is 0.
+pub fn hooked_sawtooth(t: usize) -> Vec<DVec2> {
+    assert!(t >= 1, "hooked_sawtooth: at least one tooth");
+    let mut p = vec![DVec2::new(0.0, 0.0), DVec2::new(4.0, 0.0)];
+    for k in 0..t {
+        let y = 2.0 * k as f64;
+        p.push(DVec2::new(5.0, y + 1.4));
+        p.push(DVec2::new(4.6, y + 1.2));
+        p.push(DVec2::new(4.0, y + 2.0));
+    }
+    p.push(DVec2::new(0.0, 2.0 * t as f64));
+    p
+}
+
+/// Two hooked saw-tooth slabs facing each other: [`hooked_sawtooth`]`(t)` and its mirror image
+/// `x ↦ 10.25 − x` moved up by one (tips `1/4` beyond the other's tips, facing its notches). The
+/// hulls are disjoint, their closest features are lids, and neither facing chain is monotone
+/// along the separating line (the monotone sweep declines; section 3 answers).
+///
+/// # Panics
+/// Panics if `t` is 0.
+pub fn hooked_teeth_facing(t: usize) -> (Vec<DVec2>, Vec<DVec2>) {
+    let p = hooked_sawtooth(t);
+    let q: Vec<DVec2> = p
+        .iter()
+        .rev()
+        .map(|v| DVec2::new(10.25 - v.x, v.y + 1.0))
+        .collect();
+    (p, q)
+}
+
 /// Two saw-tooth slabs facing each other: [`sawtooth`]`(t)` and its mirror image `x ↦ 10.25 − x`
 /// moved up by one, so that tips face notches `1/4` beyond the tips (counter-clockwise, exact). The
 /// convex hulls are disjoint and their closest features are lids.
