@@ -610,6 +610,7 @@ fn parcels_scene_separation_against_brute_force() {
                 [
                     "hull_features",
                     "monotone_sweep",
+                    "envelope_sweep",
                     "separable_chains",
                     "separators"
                 ]

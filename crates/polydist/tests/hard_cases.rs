@@ -369,10 +369,7 @@ fn polygon_separation_on_every_simple_hard_case() {
         );
     }
     let (chains, separators) = simple_suite(&cases);
-    assert!(
-        chains >= 5,
-        "the separable-chains route ran on {chains} cases only"
-    );
+    assert!(chains >= 5, "section 3 ran on {chains} cases only");
     assert!(
         separators >= 16 + 70,
         "the separator route ran on {separators} cases only"
@@ -446,13 +443,29 @@ fn polygon_separation_on_every_large_simple_case() {
     simple_suite(&cases);
 }
 
-/// `separation` (and below [`BRUTE_MAX`] its brute-force twin) under every kernel on `cases`;
-/// returns how many cases took the separable-chains route and how many the separator route.
+/// How [`simple_suite`] answers a case.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Method {
+    /// `separation`, every route as shipped.
+    Auto,
+    /// `separation_of_disjoint_with(Section3)` on the disjoint cases: section 3's matrices
+    /// wherever the disjoint-hull route does not end at the hull features.
+    Matrices,
+    /// The brute-force twin.
+    Brute,
+}
+
+/// `separation` (and below [`BRUTE_MAX`] its brute-force twin) under every kernel on `cases`, and
+/// section 3's matrices alone on the disjoint ones; returns how many cases took section 3 (its
+/// envelope sweep or its matrices) and how many the separator route.
 fn simple_suite(cases: &[HardCase]) -> (usize, usize) {
     use polydist::polygon::SimplePolygon;
-    use polydist::separation::{PolygonSeparation, Route, polygon_separation_brute, separation};
+    use polydist::separation::{
+        HullRouteMethod, PolygonSeparation, Route, polygon_separation_brute, separation,
+        separation_of_disjoint_with,
+    };
 
-    fn check<K: Kernel>(p: &SimplePolygon, q: &SimplePolygon, c: &HardCase, brute: bool) -> Check {
+    fn check<K: Kernel>(p: &SimplePolygon, q: &SimplePolygon, c: &HardCase, how: Method) -> Check {
         let exact = SimpleHardAnswers::from_words(&c.answers).expect("answers");
         let (contact, sq) = (&exact.contact, &exact.dist);
         let pairs: Vec<(Feature, Feature)> = exact
@@ -460,10 +473,13 @@ fn simple_suite(cases: &[HardCase]) -> (usize, usize) {
             .iter()
             .map(|&(f, g)| (ours(f), ours(g)))
             .collect();
-        let answer = if brute {
-            polygon_separation_brute::<K>(p, q)
-        } else {
-            separation::<K>(p, q)
+        let answer = match how {
+            Method::Brute => polygon_separation_brute::<K>(p, q),
+            Method::Auto => separation::<K>(p, q),
+            Method::Matrices if contact == "disjoint" => {
+                separation_of_disjoint_with::<K>(p, q, HullRouteMethod::Section3)
+            }
+            Method::Matrices => return None,
         };
         match (answer, contact.as_str()) {
             (Ok(PolygonSeparation::Separated { pair, .. }), "disjoint") => {
@@ -491,7 +507,7 @@ fn simple_suite(cases: &[HardCase]) -> (usize, usize) {
         );
         match separation::<Robust>(&p, &q) {
             Ok(PolygonSeparation::Separated {
-                route: Route::SeparableChains,
+                route: Route::SeparableChains | Route::EnvelopeSweep,
                 ..
             }) => chains += 1,
             Ok(PolygonSeparation::Separated {
@@ -501,18 +517,28 @@ fn simple_suite(cases: &[HardCase]) -> (usize, usize) {
             _ => {}
         }
         let mut results = vec![
-            ("Robust separation", check::<Robust>(&p, &q, c, false)),
-            ("Exact separation", check::<Exact>(&p, &q, c, false)),
+            (
+                "Robust separation",
+                check::<Robust>(&p, &q, c, Method::Auto),
+            ),
+            ("Exact separation", check::<Exact>(&p, &q, c, Method::Auto)),
+            (
+                "Robust section 3's matrices",
+                check::<Robust>(&p, &q, c, Method::Matrices),
+            ),
         ];
         if vp.len() * vq.len() <= BRUTE_MAX {
-            results.push(("Robust brute force", check::<Robust>(&p, &q, c, true)));
+            results.push((
+                "Robust brute force",
+                check::<Robust>(&p, &q, c, Method::Brute),
+            ));
         }
         for (name, r) in results {
             if let Some(why) = r {
                 failures.push(format!("{name} {}/{}: {why}", c.family, c.name));
             }
         }
-        if check::<Fast>(&p, &q, c, false).is_some() {
+        if check::<Fast>(&p, &q, c, Method::Auto).is_some() {
             *fast_wrong.entry(c.family.as_str()).or_default() += 1;
         }
     }

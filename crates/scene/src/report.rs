@@ -161,8 +161,9 @@ pub struct SeparationResult {
     pub feature_b: FeatureRef,
     /// How it was found: `hull_features` (the hulls' closest features lie on both boundaries),
     /// `monotone_sweep` (both facing chains monotone along a line through a hull edge: the exact
-    /// windowed sweep), `separable_chains` (section 3 across that line) or `separators` (the hulls
-    /// meet: Amato's separator).
+    /// windowed sweep), `envelope_sweep` (the same sweep on section 3's envelopes across that
+    /// line), `separable_chains` (section 3's matrices across it) or `separators` (the hulls meet:
+    /// Amato's separator).
     pub route: &'static str,
 }
 

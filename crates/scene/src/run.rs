@@ -1239,6 +1239,7 @@ fn separation_frame<K: Kernel>(
                     Route::HullFeatures => "hull_features",
                     Route::SeparableChains => "separable_chains",
                     Route::MonotoneSweep => "monotone_sweep",
+                    Route::EnvelopeSweep => "envelope_sweep",
                     Route::Separators => "separators",
                     Route::BruteForce => "brute_force",
                     Route::Scan => "scan",

@@ -141,16 +141,23 @@ impl Cand {
     /// The candidate's distance as a scan compares it. With `interior_only` the scan admits only
     /// vertex–edge pairs whose foot is strictly inside the edge, so the line distance is theirs and
     /// saves the dot signs that locate the foot.
-    fn scan_dist(self, p: &[DVec2], q: &[DVec2], interior_only: bool) -> Dist2 {
+    #[inline]
+    fn scan_dist<C: Points + ?Sized>(self, p: &C, q: &C, interior_only: bool) -> Dist2 {
         match self {
-            Cand::PvQe(i, j) if interior_only => Dist2::PointLine(p[i], q[j], q[j + 1]),
-            Cand::QvPe(j, i) if interior_only => Dist2::PointLine(q[j], p[i], p[i + 1]),
+            Cand::PvQe(i, j) if interior_only => {
+                let (a, b) = q.seg(j);
+                Dist2::PointLine(p.at(i), a, b)
+            }
+            Cand::QvPe(j, i) if interior_only => {
+                let (a, b) = p.seg(i);
+                Dist2::PointLine(q.at(j), a, b)
+            }
             _ => self.dist(p, q),
         }
     }
 
     /// [`bounds`] for an `interior_only` scan; no bounds (`(0, ∞)`) otherwise.
-    fn scan_bounds(self, p: &[DVec2], q: &[DVec2], interior_only: bool) -> (f64, f64) {
+    fn scan_bounds<C: Points + ?Sized>(self, p: &C, q: &C, interior_only: bool) -> (f64, f64) {
         if interior_only {
             bounds(self, p, q)
         } else {
@@ -158,11 +165,18 @@ impl Cand {
         }
     }
 
-    fn dist(self, p: &[DVec2], q: &[DVec2]) -> Dist2 {
+    #[inline]
+    fn dist<C: Points + ?Sized>(self, p: &C, q: &C) -> Dist2 {
         match self {
-            Cand::Vv(i, j) => Dist2::PointPoint(p[i], q[j]),
-            Cand::PvQe(i, j) => Dist2::PointSegment(p[i], q[j], q[j + 1]),
-            Cand::QvPe(j, i) => Dist2::PointSegment(q[j], p[i], p[i + 1]),
+            Cand::Vv(i, j) => Dist2::PointPoint(p.at(i), q.at(j)),
+            Cand::PvQe(i, j) => {
+                let (a, b) = q.seg(j);
+                Dist2::PointSegment(p.at(i), a, b)
+            }
+            Cand::QvPe(j, i) => {
+                let (a, b) = p.seg(i);
+                Dist2::PointSegment(q.at(j), a, b)
+            }
         }
     }
 
@@ -172,13 +186,78 @@ impl Cand {
     }
 
     /// The candidate with the points that realize it copied out of the chains.
-    fn winner(self, p: &[DVec2], q: &[DVec2]) -> Winner {
+    fn winner<C: Points + ?Sized>(self, p: &C, q: &C) -> Winner {
         let pts = match self {
-            Cand::Vv(i, j) => [p[i], q[j], q[j]],
-            Cand::PvQe(i, j) => [p[i], q[j], q[j + 1]],
-            Cand::QvPe(j, i) => [q[j], p[i], p[i + 1]],
+            Cand::Vv(i, j) => [p.at(i), q.at(j), q.at(j)],
+            Cand::PvQe(i, j) => {
+                let (a, b) = q.seg(j);
+                [p.at(i), a, b]
+            }
+            Cand::QvPe(j, i) => {
+                let (a, b) = p.seg(i);
+                [q.at(j), a, b]
+            }
         };
         Winner { cand: self, pts }
+    }
+}
+
+/// A chain as the scans read it: vertex `i`, and edge `e` as the segment it stands for.
+pub(crate) trait Points {
+    /// The number of vertices.
+    fn count(&self) -> usize;
+    /// Vertex `i`.
+    fn at(&self, i: usize) -> DVec2;
+    /// The segment of edge `e` (between vertices `e` and `e + 1` in the scans' order).
+    fn seg(&self, e: usize) -> (DVec2, DVec2);
+}
+
+/// A polygonal chain: edge `e` joins vertices `e` and `e + 1`.
+impl Points for [DVec2] {
+    #[inline]
+    fn count(&self) -> usize {
+        self.len()
+    }
+    #[inline]
+    fn at(&self, i: usize) -> DVec2 {
+        self[i]
+    }
+    #[inline]
+    fn seg(&self, e: usize) -> (DVec2, DVec2) {
+        (self[e], self[e + 1])
+    }
+}
+
+/// An envelope of Lemma 2 as [`scan_windowed`] reads it (`monotone::sweep_envelopes`): the
+/// visible vertices `v`, strictly increasing in height, and for each `k` the whole edge `e[k]`
+/// of the chain whose part between the heights of `v[k]` and `v[k + 1]` is the envelope there.
+/// The edge may reach beyond those heights (behind a visible vertex, to a hidden end): its points
+/// there are still points of the chain, so every distance the scan evaluates is a true one.
+///
+/// The keys of edge `k` are those of `v[k]` and `v[k + 1]` ([`Keys::far`], [`Boxes`]), which
+/// bound its part on the envelope from the side that matters: that part is a segment from a
+/// point at `v[k]`'s height no nearer to the line than `v[k]` (`v[k]` itself, or a shadow point
+/// behind it) to one at `v[k + 1]`'s height no nearer than `v[k + 1]`, so its positions `t` lie
+/// between the two vertices' and its depths are at least the lesser of theirs. The other chain
+/// lies on the other closed side of the line, so the gap across the line from any of its points
+/// is at least the gap to that lesser depth, and the box's lower bound of the distance holds.
+pub(crate) struct Carried<'a> {
+    pub(crate) v: &'a [DVec2],
+    pub(crate) e: &'a [(DVec2, DVec2)],
+}
+
+impl Points for Carried<'_> {
+    #[inline]
+    fn count(&self) -> usize {
+        self.v.len()
+    }
+    #[inline]
+    fn at(&self, i: usize) -> DVec2 {
+        self.v[i]
+    }
+    #[inline]
+    fn seg(&self, e: usize) -> (DVec2, DVec2) {
+        self.e[e]
     }
 }
 
@@ -244,15 +323,15 @@ impl Winner {
 /// Whether the vertex–edge candidate `c` is taken: always, or with `interior_only` when its vertex
 /// projects strictly inside the edge (otherwise a vertex pair has its distance and comes first in
 /// the scan's order, so it never wins).
-fn admitted<K: Kernel>(c: Cand, p: &[DVec2], q: &[DVec2], interior_only: bool) -> bool {
-    let inside = |v: DVec2, a: DVec2, b: DVec2| {
+fn admitted<K: Kernel, C: Points + ?Sized>(c: Cand, p: &C, q: &C, interior_only: bool) -> bool {
+    let inside = |v: DVec2, (a, b): (DVec2, DVec2)| {
         K::dot_sign(a, v, a, b) == Sign::Positive && K::dot_sign(b, v, b, a) == Sign::Positive
     };
     !interior_only
         || match c {
             Cand::Vv(..) => true,
-            Cand::PvQe(i, j) => inside(p[i], q[j], q[j + 1]),
-            Cand::QvPe(j, i) => inside(q[j], p[i], p[i + 1]),
+            Cand::PvQe(i, j) => inside(p.at(i), q.seg(j)),
+            Cand::QvPe(j, i) => inside(q.at(j), p.seg(i)),
         }
 }
 
@@ -383,7 +462,7 @@ const BOUNDS_SLACK: f64 = 4.0 * BOUNDS_U;
 /// more roundings, covered by the factor `1 ∓ 4u`. Underflow: every quantity is at least `2⁻⁹⁰⁰` or
 /// the bound gives up (`lo = 0`, or `(0, ∞)`), so an underflowed product (at most `2⁻¹⁰⁷⁴` off) is
 /// inside the `64u²` slack. Non-finite values give `(0, ∞)`.
-fn bounds(c: Cand, p: &[DVec2], q: &[DVec2]) -> (f64, f64) {
+fn bounds<C: Points + ?Sized>(c: Cand, p: &C, q: &C) -> (f64, f64) {
     let give_up = (0.0, f64::INFINITY);
     // `|d|²` for a difference vector `d` of rounded coordinate differences.
     let squared = |d: DVec2| {
@@ -397,9 +476,15 @@ fn bounds(c: Cand, p: &[DVec2], q: &[DVec2]) -> (f64, f64) {
         }
     };
     let (v, s, t) = match c {
-        Cand::Vv(i, j) => return squared(p[i] - q[j]),
-        Cand::PvQe(i, j) => (p[i], q[j], q[j + 1]),
-        Cand::QvPe(j, i) => (q[j], p[i], p[i + 1]),
+        Cand::Vv(i, j) => return squared(p.at(i) - q.at(j)),
+        Cand::PvQe(i, j) => {
+            let (s, t) = q.seg(j);
+            (p.at(i), s, t)
+        }
+        Cand::QvPe(j, i) => {
+            let (s, t) = p.seg(i);
+            (q.at(j), s, t)
+        }
     };
     // A vertical or horizontal edge: the squared distance to its line is that of one coordinate
     // difference (rectilinear input: comb teeth), bounded as a point pair's.
@@ -694,7 +779,9 @@ pub(crate) fn boxes_farther_than(a: (DVec2, DVec2), b: (DVec2, DVec2), cut: f64)
 /// bound of it is).
 fn gap_beyond(gap: Dist2, cut: f64) -> bool {
     match gap {
-        Dist2::PointPoint(x, y) => cut.is_finite() && bounds(Cand::Vv(0, 0), &[x], &[y]).0 > cut,
+        Dist2::PointPoint(x, y) => {
+            cut.is_finite() && bounds::<[DVec2]>(Cand::Vv(0, 0), &[x], &[y]).0 > cut
+        }
         _ => false,
     }
 }
@@ -758,7 +845,7 @@ fn scan_pruned_best<K: Kernel>(
     let best_b = core::cell::Cell::new(best.scan_bounds(p, q, interior_only));
     let consider = |c: Cand, best: &mut Cand, best_d: &mut Dist2| {
         let b = c.scan_bounds(p, q, interior_only);
-        if b.0 > best_b.get().1 || b.0 > cut || !admitted::<K>(c, p, q, interior_only) {
+        if b.0 > best_b.get().1 || b.0 > cut || !admitted::<K, _>(c, p, q, interior_only) {
             return;
         }
         let d = dist(c);
@@ -887,16 +974,16 @@ impl Window {
 ///
 /// # Complexity
 /// `O(n_p + n_q + budget)` key comparisons, bounds and exact tests.
-pub(crate) fn scan_windowed<K: Kernel>(
-    p: &[DVec2],
-    q: &[DVec2],
+pub(crate) fn scan_windowed<K: Kernel, C: Points + ?Sized>(
+    p: &C,
+    q: &C,
     kp: Keys<'_>,
     kq: Keys<'_>,
     lens: &Lens,
     cut: f64,
     budget: usize,
 ) -> Option<(Winner, usize)> {
-    let (np, nq) = (p.len(), q.len());
+    let (np, nq) = (p.count(), q.count());
     if np == 0
         || nq == 0
         || kp.t.len() != np
@@ -906,7 +993,7 @@ pub(crate) fn scan_windowed<K: Kernel>(
     {
         return None;
     }
-    let mut best = Best::<K, true>::new(p, q, cut);
+    let mut best = Best::<K, true, C>::new(p, q, cut);
     let mut tried = 0usize;
     // The neighbours in key order.
     let (tp, tq) = (kp.t, kq.t);
@@ -946,6 +1033,10 @@ pub(crate) fn scan_windowed<K: Kernel>(
     // The parts of the current window to try, reused from vertex to vertex.
     let mut kept = Vec::new();
     let mut ahead = tried;
+    // Vertices counted so far: every `EXTRAPOLATE` of them, a count heading beyond the budget
+    // gives up early (crowded windows cost box tests a vertex by the dozen, and the count would
+    // otherwise run most of the way first). Only the caller's choice of method depends on it.
+    let mut done = 0usize;
     for pass in (0..2).filter(|_| whole > budget) {
         let ((kx, ky), by) = (sides(pass), blocks.as_ref().map(|b| &b[pass]));
         let mut window = Window::default();
@@ -958,7 +1049,10 @@ pub(crate) fn scan_windowed<K: Kernel>(
             for (vs, es) in kept.drain(..) {
                 ahead += es.len() + if pass == 0 { vs.len() } else { 0 };
             }
-            if ahead > budget {
+            done += 1;
+            let heading = done % EXTRAPOLATE == 0
+                && (ahead - tried).saturating_mul(np + nq) > budget.saturating_mul(done);
+            if ahead > budget || heading {
                 return None;
             }
         }
@@ -970,7 +1064,7 @@ pub(crate) fn scan_windowed<K: Kernel>(
             let u2 = best.u2();
             let span = Span::of(window.around(t, ky.t, lens.window(u2)), ky.t.len());
             let Some(by) = by else {
-                tried += best.span(pass, x, (span.vs, span.es), |_, _, _| false);
+                tried += best.span(pass, x, (span.vs, span.es), |_, _| false);
                 if tried > budget {
                     return None;
                 }
@@ -978,7 +1072,7 @@ pub(crate) fn scan_windowed<K: Kernel>(
             };
             by.survivors(&span, (t, d), lens, u2, &mut kept);
             for part in kept.drain(..) {
-                tried += best.span(pass, x, part, |lo, hi, u2| ky.far(lo, hi, (t, d), lens, u2));
+                tried += best.span(pass, x, part, |item, u2| ky.far(item, (t, d), lens, u2));
             }
             if tried > budget {
                 return None;
@@ -990,9 +1084,9 @@ pub(crate) fn scan_windowed<K: Kernel>(
 
 /// The best candidate so far of a scan ([`scan`], [`scan_windowed`]), with its exact distance and
 /// its bounds.
-struct Best<'a, K, const INTERIOR_ONLY: bool> {
-    p: &'a [DVec2],
-    q: &'a [DVec2],
+struct Best<'a, K, const INTERIOR_ONLY: bool, C: ?Sized = [DVec2]> {
+    p: &'a C,
+    q: &'a C,
     cut: f64,
     best: Cand,
     d: Dist2,
@@ -1000,8 +1094,8 @@ struct Best<'a, K, const INTERIOR_ONLY: bool> {
     kernel: core::marker::PhantomData<K>,
 }
 
-impl<'a, K: Kernel, const INTERIOR_ONLY: bool> Best<'a, K, INTERIOR_ONLY> {
-    fn new(p: &'a [DVec2], q: &'a [DVec2], cut: f64) -> Self {
+impl<'a, K: Kernel, const INTERIOR_ONLY: bool, C: Points + ?Sized> Best<'a, K, INTERIOR_ONLY, C> {
+    fn new(p: &'a C, q: &'a C, cut: f64) -> Self {
         let best = Cand::Vv(0, 0);
         Best {
             p,
@@ -1026,7 +1120,7 @@ impl<'a, K: Kernel, const INTERIOR_ONLY: bool> Best<'a, K, INTERIOR_ONLY> {
     fn consider(&mut self, c: Cand) {
         let (p, q, interior_only) = (self.p, self.q, INTERIOR_ONLY);
         let b = c.scan_bounds(p, q, interior_only);
-        if b.0 > self.b.1 || b.0 > self.cut || !admitted::<K>(c, p, q, interior_only) {
+        if b.0 > self.b.1 || b.0 > self.cut || !admitted::<K, _>(c, p, q, interior_only) {
             return;
         }
         let d = c.scan_dist(p, q, interior_only);
@@ -1038,26 +1132,26 @@ impl<'a, K: Kernel, const INTERIOR_ONLY: bool> Best<'a, K, INTERIOR_ONLY> {
     }
 
     /// Vertex `x` of the pass's own chain against the other chain's vertices `vs` (pass 0 only)
-    /// and edges `es`, each skipped when `far(lo, hi, u2)` says the other chain's vertices `lo` to
-    /// `hi` are certainly farther than `√u2`. The candidates tried.
+    /// and edges `es`, each skipped when `far(Item, u2)` says it is certainly farther than `√u2`.
+    /// The candidates tried.
     #[inline]
     fn span(
         &mut self,
         pass: usize,
         x: usize,
         (vs, es): (Range<usize>, Range<usize>),
-        far: impl Fn(usize, usize, f64) -> bool,
+        far: impl Fn(Item, f64) -> bool,
     ) -> usize {
         let tried = es.len() + if pass == 0 { vs.len() } else { 0 };
         if pass == 0 {
             for y in vs {
-                if !far(y, y, self.u2()) {
+                if !far(Item::Vertex(y), self.u2()) {
                     self.consider(Cand::Vv(x, y));
                 }
             }
         }
         for e in es {
-            if !far(e, e + 1, self.u2()) {
+            if !far(Item::Edge(e), self.u2()) {
                 self.consider(if pass == 0 {
                     Cand::PvQe(x, e)
                 } else {
@@ -1077,21 +1171,35 @@ pub(crate) struct Keys<'a> {
     pub(crate) d: &'a [f64],
 }
 
+/// A vertex or an edge of the other chain, for [`Keys::far`].
+#[derive(Clone, Copy)]
+enum Item {
+    Vertex(usize),
+    Edge(usize),
+}
+
 impl Keys<'_> {
-    /// Whether the vertices `lo` to `hi` (one vertex, or the ends of an edge) are certainly
-    /// farther than `√u2` from the vertex with keys `x`, by their own keys: their box is a point
-    /// (a vertex) or the keys of the ends (an edge: `t` and `d` are affine, so its points lie
-    /// between them).
+    /// Whether vertex or edge `item` is certainly farther than `√u2` from the vertex with keys
+    /// `x`, by its own keys: a vertex's, or an edge's between its two vertices' (`t` and `d` are
+    /// affine along a chain's edge, so its points lie between them; for an envelope see
+    /// [`Carried`]).
     #[inline]
-    fn far(&self, lo: usize, hi: usize, (t, d): (f64, f64), lens: &Lens, u2: f64) -> bool {
+    fn far(&self, item: Item, x: (f64, f64), lens: &Lens, u2: f64) -> bool {
+        let (lo, hi) = match item {
+            Item::Vertex(y) => (y, y),
+            Item::Edge(e) => (e, e + 1),
+        };
         lens.apart(
-            (t, d),
+            x,
             hull(self.t[lo], self.t[hi]),
             hull(self.d[lo], self.d[hi]),
             u2,
         )
     }
 }
+
+/// Vertices between two extrapolations of [`scan_windowed`]'s count.
+const EXTRAPOLATE: usize = 256;
 
 /// Candidates a vertex up to which [`scan_windowed`] takes its windows whole.
 const SPARSE: usize = 8;
@@ -1222,14 +1330,14 @@ impl Span {
 /// Whether the squared distance from `v` to the line through `a` and `c` is certainly greater than
 /// `cut` ([`bounds`]' lower bound of it is).
 pub(crate) fn farther_from_line_than(v: DVec2, a: DVec2, c: DVec2, cut: f64) -> bool {
-    bounds(Cand::QvPe(0, 0), &[a, c], &[v]).0 > cut
+    bounds::<[DVec2]>(Cand::QvPe(0, 0), &[a, c], &[v]).0 > cut
 }
 
 /// An upper bound of the squared distance `d` (a point pair, or a point and a closed segment),
 /// from [`bounds`]: the nearer end's, or the line's when the foot is strictly inside the segment
 /// (exact dot signs). `∞` when the bounds give up.
 pub(crate) fn upper_bound<K: Kernel>(d: Dist2) -> f64 {
-    let pp = |v: DVec2, w: DVec2| bounds(Cand::Vv(0, 0), &[v], &[w]).1;
+    let pp = |v: DVec2, w: DVec2| bounds::<[DVec2]>(Cand::Vv(0, 0), &[v], &[w]).1;
     match d {
         Dist2::PointPoint(v, w) => pp(v, w),
         Dist2::PointSegment(v, a, b) => {
@@ -1238,7 +1346,7 @@ pub(crate) fn upper_bound<K: Kernel>(d: Dist2) -> f64 {
                 && K::dot_sign(a, v, a, b) == Sign::Positive
                 && K::dot_sign(b, v, b, a) == Sign::Positive
             {
-                ends.min(bounds(Cand::QvPe(0, 0), &[a, b], &[v]).1)
+                ends.min(bounds::<[DVec2]>(Cand::QvPe(0, 0), &[a, b], &[v]).1)
             } else {
                 ends
             }
@@ -1311,7 +1419,7 @@ mod tests {
             }
             for c in [Cand::Vv(0, 1), Cand::PvQe(1, 0), Cand::QvPe(0, 0)] {
                 // (QvPe(0, 0) is q[0] against P's edge: the near-incident candidate of class 5.)
-                let (lo, hi) = bounds(c, &p, &q);
+                let (lo, hi) = bounds(c, p.as_slice(), q.as_slice());
                 assert!(lo <= hi, "{c:?} {p:?} {q:?}");
                 let (v, s, t) = match c {
                     Cand::Vv(i, j) => (p[i], q[j], q[j]),
@@ -1522,7 +1630,7 @@ mod tests {
             pruned += usize::from(boxes_far > 0);
             let (w, _) = scan_pruned_winner_below::<Robust>(&p, &q, f64::INFINITY, Some(&near));
             assert_eq!(
-                Robust::cmp_dist2(w.cand.dist(&p, &q), d),
+                Robust::cmp_dist2(w.cand.dist(p.as_slice(), q.as_slice()), d),
                 Ordering::Equal,
                 "{p:?} {q:?} {near:?}"
             );
@@ -1553,7 +1661,7 @@ mod tests {
                 scan_pruned_winner_below::<Robust>(&p, &q, cut, None),
             ] {
                 let got = w.pair();
-                let gd = w.cand.dist(&p, &q);
+                let gd = w.cand.dist(p.as_slice(), q.as_slice());
                 assert!(
                     to_rational(hi).is_none_or(|h| {
                         let e = match gd {
@@ -1601,7 +1709,7 @@ mod tests {
             };
             let whole = scan::<Robust>(&p, &q, true);
             let (w, _) = scan_winner_below_except::<Robust>(&p, &q, f64::INFINITY, seen.clone());
-            let mut d = w.cand.dist(&p, &q);
+            let mut d = w.cand.dist(p.as_slice(), q.as_slice());
             if !seen.p.is_empty() && !seen.q.is_empty() {
                 let (sp, sq) = (&p[seen.p.clone()], &q[seen.q.clone()]);
                 let di = pair_dist(sp, sq, &scan::<Robust>(sp, sq, true));

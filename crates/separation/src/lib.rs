@@ -27,6 +27,7 @@
 //! | item | what it is | status |
 //! |---|---|---|
 //! | [`separation_of_chains`] | σ of two simple chains separated by a line, open or closed (a whole polygon boundary is passed with its first vertex repeated at the end), with a realizing pair and caller features: Lemma 2's envelope, then CVV + CVE (both ways) | done; `O(n)` (the on-line pair's sort aside: `O(k log k)` for the `k` vertices on the line); agrees with the exact oracle, every test matrix checked for total monotonicity |
+//! | [`separation_of_chains_with`] with [`ChainMethod::Auto`] (the method of every polygon route) | our addition before section 3's matrices: the exact windowed scan of the monotone sweep on Lemma 2's two envelopes, which are monotone along the line whatever the chains are (visible vertices against the whole edges carrying the envelope: no constructed point), within `96N + 1024` candidates | done (2026-12-01); `O(N)`, the matrices when the budget runs out (`docs/algorithms/separation.md`, "The envelope sweep"); [`Route::EnvelopeSweep`] on the disjoint-hull route |
 //! | [`perpendicular_envelope`] | Lemma 2: the part of a simple chain perpendicularly visible from the line (visible vertices, edges, symbolic shadow points), by one walk along the chain | done; `O(n)` |
 //! | [`closest_visible_vertices`] | CVV of two chains separated by a line and monotone along it (edges perpendicular to the line allowed): Lemma 2, `W()` by hull scans, Lemma 3, `R()`, the tagged matrix `M` and SMAWK, `O(n_p + n_q)` | done (monotone chains only: the CVV of general chains is not that of their envelopes) |
 //! | [`CvvMatrix`], [`CveMatrix`], [`MatrixEntry`], [`EdgeEntry`], [`compare_entries`], [`compare_edge_entries`] | the matrices `M` themselves, for verification with `monotone_minima::check_totally_monotone_by` | done |
@@ -105,7 +106,7 @@ pub use polygon::{
 };
 pub use polyline::polyline_to_polygon;
 pub use result::{ChainSeparation, ClosestPair, Cvv, CvvStats, SeparationStats};
-pub use sigma::separation_of_chains;
+pub use sigma::{ChainMethod, separation_of_chains, separation_of_chains_with};
 pub use simple_distance::{BoundaryPoint, PointToPolygon, point_to_polygon, segment_to_polygon};
 pub use site::Vertex;
 pub use spm::{Extensions, extensions};

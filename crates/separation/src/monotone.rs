@@ -40,8 +40,10 @@ use polydist_polygon::{Feature, SimplePolygon};
 
 use std::borrow::Cow;
 
-use crate::brute::{Keys, Winner, scan_windowed};
+use crate::brute::{Carried, Keys, Winner, scan_windowed};
+use crate::chain::{Frames, Prepared};
 use crate::result::ClosestPair;
+use crate::sigma::Cand;
 
 /// The monotone sweep's answer: the pair, with internal features of `P` and `Q` (edge `e` joins
 /// internal vertices `e` and `e + 1 mod n`), and the candidates tried.
@@ -138,6 +140,97 @@ pub(crate) fn sweep_chains<K: Kernel>(
     Some(winner.reversed(rp.then_some(p.len()), rq.then_some(q.len())))
 }
 
+/// Section 3's first try (our addition): [`scan_windowed`] on the two envelopes of Lemma 2, which
+/// are monotone along the line whatever the chains are (docs/algorithms/separation.md, "The
+/// envelope sweep"). `pp` and `qq` are the envelopes of chains `P` and `Q` in `frames` (visible
+/// vertices strictly increasing in height, the edge carrying the envelope between each two); the
+/// answer is a candidate of section 3 in the caller's features, and the candidates tried.
+///
+/// Why it is exact. A point of `P` with a point of `P` at its height strictly nearer to the line
+/// is in no closest pair (Lemma 2's dominance), so some closest pair `(x, y)` has both points on
+/// the envelopes, and one of them a visible vertex (a closest pair of two sets of segments has a
+/// point at an end of one; the other ends of envelope pieces, shadow points and ends hidden at a
+/// visible vertex's height, are dominated). Say `x` is a visible vertex and `y` lies on the
+/// envelope part of edge `e`. The scan evaluates `x` against the whole edge `e`: a pair of points
+/// of the chains, no farther than `|x − y|`, so exactly `σ`; and every distance it evaluates is a
+/// true one. Its window and its boxes skip an edge only when the edge's part on the envelope is
+/// certainly farther than the best so far (its keys are its visible vertices', which bound that
+/// part from the other chain's side: [`Carried`]), so the pair `(x, e)` is never skipped. With `interior_only`, a
+/// whole edge whose nearest point to `x` is an end `z` is left to the vertex pair `(x, z)`: then
+/// `|x − z| = σ`, so `z` is dominated by no point of `Q`, hence a visible vertex, in `x`'s window.
+///
+/// `None` when an envelope has gaps (clipped chains: their runs end at symbolic points, which the
+/// keys cannot hold), when a key overflows, or when the [`budget`] runs out.
+///
+/// # Complexity
+/// `O(n_p + n_q)`: the keys of the visible vertices, then at most `96(n_p + n_q) + 1024`
+/// candidates.
+pub(crate) fn sweep_envelopes<K: Kernel>(
+    pp: &Prepared,
+    qq: &Prepared,
+    frames: Frames,
+    cut: f64,
+) -> Option<(Cand, usize)> {
+    let segs = |c: &Prepared| -> Option<Vec<(DVec2, DVec2)>> {
+        c.edges
+            .iter()
+            .map(|e| e.as_ref().map(|e| (e.a, e.b)))
+            .collect()
+    };
+    let (sp, sq) = (segs(pp)?, segs(qq)?);
+    let (a, b) = (frames.p.l0, frames.p.l1);
+    let (kp, kq, lens) = keys(&pp.pts, &qq.pts, a, b)?;
+    let (cp, cq) = (
+        Carried { v: &pp.pts, e: &sp },
+        Carried { v: &qq.pts, e: &sq },
+    );
+    let n = pp.pts.len() + qq.pts.len();
+    let (w, tried) = scan_windowed::<K, Carried<'_>>(
+        &cp,
+        &cq,
+        Keys { t: &kp.0, d: &kp.1 },
+        Keys { t: &kq.0, d: &kq.1 },
+        &lens,
+        cut,
+        budget(n),
+    )?;
+    let edge = |c: &Prepared, k: usize| c.edges.get(k).copied().flatten();
+    let cand = match w.features() {
+        (Feature::Vertex(i), Feature::Vertex(j)) => {
+            Cand::Vv(pp.pts[i], pp.idx[i], qq.pts[j], qq.idx[j])
+        }
+        (Feature::Vertex(i), Feature::Edge(k)) => {
+            let e = edge(qq, k)?;
+            Cand::Ve {
+                v: pp.pts[i],
+                j: pp.idx[i],
+                a: e.a,
+                ia: e.ia,
+                b: e.b,
+                ib: e.ib,
+                edge: e.caller,
+                p_side: false,
+            }
+        }
+        (Feature::Edge(k), Feature::Vertex(j)) => {
+            let e = edge(pp, k)?;
+            Cand::Ve {
+                v: qq.pts[j],
+                j: qq.idx[j],
+                a: e.a,
+                ia: e.ia,
+                b: e.b,
+                ib: e.ib,
+                edge: e.caller,
+                p_side: true,
+            }
+        }
+        // A scan's winner has a vertex; declining is safe anyway.
+        (Feature::Edge(_), Feature::Edge(_)) => return None,
+    };
+    Some((cand, tried))
+}
+
 /// [`scan_windowed`] on two chains listed in non-decreasing order of `t` along the line through
 /// `a` and `b`: their keys, the [`Lens`], the [`budget`]. The winner and the candidates tried.
 fn keyed<K: Kernel>(
@@ -149,7 +242,7 @@ fn keyed<K: Kernel>(
 ) -> Option<(Winner, usize)> {
     let (kp, kq, lens) = keys(fp, fq, a, b)?;
     let (kp, kq) = (Keys { t: &kp.0, d: &kp.1 }, Keys { t: &kq.0, d: &kq.1 });
-    scan_windowed::<K>(fp, fq, kp, kq, &lens, cut, budget(fp.len() + fq.len()))
+    scan_windowed::<K, [DVec2]>(fp, fq, kp, kq, &lens, cut, budget(fp.len() + fq.len()))
 }
 
 /// How the chain `c` runs along the line through `a` and `b`: `Some(false)` when `t` never

@@ -33,7 +33,7 @@ use crate::error::{Chain, SeparationError};
 use crate::monotone::monotone_sweep;
 use crate::result::{ClosestPair, SeparationStats};
 use crate::separator;
-use crate::sigma::separation_of_chains;
+use crate::sigma::{ChainMethod, chains};
 
 /// A straight piece of a polygon's boundary between two of the caller's vertices: internal edge `e`
 /// of a [`SimplePolygon`] joins the caller's vertices `from = source_index(e)` and
@@ -79,6 +79,11 @@ pub enum Route {
     /// exact windowed sweep answered within its linear budget (`docs/algorithms/separation-polygons.md`,
     /// "The monotone sweep"); [`SeparationStats::sweep_candidates`] counts its candidates.
     MonotoneSweep,
+    /// The hulls are disjoint, a facing chain is not monotone, and section 3's envelope sweep
+    /// answered: the same exact windowed scan on Lemma 2's envelopes, which are monotone along the
+    /// line whatever the chains are (`docs/algorithms/separation.md`, "The envelope sweep");
+    /// [`SeparationStats::sweep_candidates`] counts its candidates.
+    EnvelopeSweep,
     /// The hulls meet: Amato's separator `S(P, Q)` (non-containing case), then the subproblems
     /// `σ(P_i, Q_i)`; see [`SeparationStats`] for the separator's counts.
     Separators,
@@ -238,21 +243,26 @@ pub fn separation<K: Kernel>(
 /// Otherwise a separating line through an edge of one hull
 /// (a hull edge adjacent to the closest features whose line has the other hull strictly beyond it —
 /// one always exists: the nearest point of `Z = CH(P) ⊖ CH(Q)` to the origin lies on a `Z`-edge visible
-/// from the origin, and that edge is a hull edge at one of the two closest features); then section 3
-/// ([`separation_of_chains`]) on the two whole boundaries, each passed as the closed chain
-/// `v_0, …, v_{n−1}, v_0` of its internal vertices. Features are mapped back to the caller's.
+/// from the origin, and that edge is a hull edge at one of the two closest features); then the
+/// monotone sweep when both facing chains are monotone along the line ([`Route::MonotoneSweep`]),
+/// else section 3 ([`separation_of_chains_with`](crate::separation_of_chains_with) with
+/// [`ChainMethod::Auto`](crate::ChainMethod::Auto): its envelope sweep, [`Route::EnvelopeSweep`],
+/// then its matrices, [`Route::SeparableChains`]) on the two whole boundaries, each passed as the
+/// closed chain `v_0, …, v_{n−1}, v_0` of its internal vertices. Features are mapped back to the
+/// caller's.
 ///
 /// When the hulls meet, Amato's separator (as in [`separation`], without the intersection sweep).
 ///
 /// # Errors
 /// [`SeparationError::HullsIntersect`] when one polygon lies inside the other (their disjointness
 /// is not checked; on meeting polygons the answer is unspecified, this error or another, but no
-/// panic); [`SeparationError::Inconsistent`] and any error of [`separation_of_chains`] only under
-/// the `Fast` kernel.
+/// panic); [`SeparationError::Inconsistent`] and any error of
+/// [`separation_of_chains`](crate::separation_of_chains) only under the `Fast` kernel.
 ///
 /// # Complexity
 /// `O(N)`: `O(N)` for the hulls and the separating line, `O(log N)` for the hull distance, and
-/// section 3 on the boundaries (see [`separation_of_chains`] for its bound on general chains).
+/// section 3 on the boundaries (see [`separation_of_chains`](crate::separation_of_chains) for its
+/// bound on general chains).
 ///
 /// # Examples
 /// ```
@@ -276,10 +286,14 @@ pub fn separation_of_disjoint<K: Kernel>(
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum HullRouteMethod {
     /// The monotone sweep ([`Route::MonotoneSweep`]) when both facing chains are monotone along the
-    /// line and its budget of `96N + 1024` candidates holds; section 3 otherwise.
+    /// line and its budget of `96N + 1024` candidates holds; otherwise section 3 with its envelope
+    /// sweep first ([`ChainMethod::Auto`](crate::ChainMethod::Auto), [`Route::EnvelopeSweep`]),
+    /// and its matrices when that declines.
     #[default]
     Auto,
-    /// Section 3 always ([`Route::SeparableChains`]): the paper's algorithm alone, for comparison.
+    /// Section 3's matrices always ([`Route::SeparableChains`],
+    /// [`ChainMethod::Matrices`](crate::ChainMethod::Matrices)): the paper's algorithm alone, for
+    /// comparison.
     Section3,
 }
 
@@ -343,11 +357,19 @@ fn hull_route<K: Kernel>(
         }
     }
     let (cp, cq) = (closed_chain(p), closed_chain(q));
-    let s = separation_of_chains::<K>(&cp, &cq, a, b)?;
+    let how = match method {
+        HullRouteMethod::Auto => ChainMethod::Auto,
+        HullRouteMethod::Section3 => ChainMethod::Matrices,
+    };
+    let (pair, stats, swept) = chains::<K>(&cp, &cq, (a, b), how, f64::INFINITY)?;
     Ok(Ok(PolygonSeparation::Separated {
-        pair: to_caller::<K>(p, q, s.pair),
-        route: Route::SeparableChains,
-        stats: s.stats,
+        pair: to_caller::<K>(p, q, pair),
+        route: if swept {
+            Route::EnvelopeSweep
+        } else {
+            Route::SeparableChains
+        },
+        stats,
     }))
 }
 

@@ -13,7 +13,7 @@ use crate::polygon::{
     PolygonSeparation, Route, caller_feature, closed_chain, hull_pair, separating_edge,
 };
 use crate::result::{ClosestPair, SeparationStats};
-use crate::sigma::separation_of_chains;
+use crate::sigma::{ChainMethod, chains};
 use crate::simple_distance::segment_to_polygon;
 
 /// σ(T, Q) of an open simple polyline `T` and a simple polygon `Q` whose convex hulls are disjoint:
@@ -130,13 +130,23 @@ pub fn polyline_to_polygon<K: Kernel>(
             },
         });
     }
-    let s = separation_of_chains::<K>(t, &closed_chain(q), a, b)?;
+    let (pair, stats, swept) = chains::<K>(
+        t,
+        &closed_chain(q),
+        (a, b),
+        ChainMethod::Auto,
+        f64::INFINITY,
+    )?;
     Ok(PolygonSeparation::Separated {
         pair: ClosestPair {
-            feature_q: caller_feature::<K>(q, s.pair.feature_q, s.pair.point_p),
-            ..s.pair
+            feature_q: caller_feature::<K>(q, pair.feature_q, pair.point_p),
+            ..pair
         },
-        route: Route::SeparableChains,
-        stats: s.stats,
+        route: if swept {
+            Route::EnvelopeSweep
+        } else {
+            Route::SeparableChains
+        },
+        stats,
     })
 }

@@ -80,12 +80,18 @@ pub struct SeparationStats {
     /// the monotone sweep answered in place of section 3 (both monotone along the line, windows
     /// within the budget).
     pub subproblem_parts_swept: usize,
+    /// Separator route only: parts of subproblems that section 3's envelope sweep answered
+    /// (the parts not both monotone, or whose monotone sweep ran out of budget, with envelopes
+    /// whose windows fit the budget; [`ChainMethod::Auto`](crate::ChainMethod::Auto)).
+    pub subproblem_parts_enveloped: usize,
     /// Separator route only: side assignments of subproblems that cross the line of `l_i` more
     /// often than pairs of runs allow, solved by section 3 on the subchains clipped to the line
     /// (gapped chains with symbolic clip points: Step G).
     pub subproblem_parts_gapped: usize,
-    /// [`Route::MonotoneSweep`](crate::Route::MonotoneSweep) only: the candidate pairs the sweep
-    /// tried (at most `96N + 1024`).
+    /// [`Route::MonotoneSweep`](crate::Route::MonotoneSweep) and
+    /// [`Route::EnvelopeSweep`](crate::Route::EnvelopeSweep) (and
+    /// [`ChainMethod::Auto`](crate::ChainMethod::Auto) when its sweep answered) only: the
+    /// candidate pairs the sweep tried (at most `96N + 1024`).
     pub sweep_candidates: usize,
 }
 

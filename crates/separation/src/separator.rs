@@ -40,7 +40,7 @@ use crate::monotone::sweep_chains;
 use crate::param::{Affine, Edge, Param};
 use crate::pockets::{Pruned, Wall, walls};
 use crate::result::{ClosestPair, SeparationStats};
-use crate::sigma::{build as build_pair, separation_of_chains};
+use crate::sigma::{ChainMethod, build as build_pair, chains};
 use crate::spm::{Extensions, extensions};
 use crate::triangulate::{Triangulation, triangulate};
 
@@ -1217,7 +1217,7 @@ fn dist_of(p: &[DVec2], q: &[DVec2], fp: Feature, fq: Feature) -> Dist2 {
 /// internal features, with the work done.
 ///
 /// Each subproblem of more than [`SCAN_BELOW`] vertex pairs is given to section 3
-/// ([`separation_of_chains`]) across the line of its run, in the parts [`split`] hands it (peeled
+/// ([`chains`]) across the line of its run, in the parts [`split`] hands it (peeled
 /// ends, or runs for both assignments of sides, the rest scanned in linear time, or the subchains
 /// clipped to the line, [`separation_of_gapped`]). Small subproblems, thin ones (a subchain of at
 /// most [`THIN`] vertices: linear), and any that section 3
@@ -1664,9 +1664,13 @@ fn execute<K: Kernel>(
             out.push((shift(fp, p0), shift(fq, q0), Err(w)));
             continue;
         }
-        let sep = separation_of_chains::<K>(&p[p0..=p1], &q[q0..=q1], a, c).ok()?;
-        let (fp, fq) = (shift(sep.pair.feature_p, p0), shift(sep.pair.feature_q, q0));
-        out.push((fp, fq, Ok(sep.pair)));
+        let (p_part, q_part) = (&p[p0..=p1], &q[q0..=q1]);
+        let (pair, _, swept) = chains::<K>(p_part, q_part, (a, c), ChainMethod::Auto, cut).ok()?;
+        if swept {
+            stats.subproblem_parts_enveloped += 1;
+        }
+        let (fp, fq) = (shift(pair.feature_p, p0), shift(pair.feature_q, q0));
+        out.push((fp, fq, Ok(pair)));
     }
     for &((p0, p1), (q0, q1)) in &jobs.scans {
         let w = scan_part::<K>(&p[p0..=p1], &q[q0..=q1], cut, Seen::NONE, &near);

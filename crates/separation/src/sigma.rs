@@ -15,6 +15,7 @@ use crate::cve::{CveMatrix, EdgeEntry, compare_edge_entries};
 use crate::cvv::CvvMatrix;
 use crate::envelope::prepare;
 use crate::error::{Chain, SeparationError};
+use crate::monotone::sweep_envelopes;
 use crate::pieces::pieces;
 use crate::result::{ChainSeparation, ClosestPair, SeparationStats};
 use crate::site::Vertex;
@@ -147,6 +148,73 @@ pub fn separation_of_chains<K: Kernel>(
     a: DVec2,
     b: DVec2,
 ) -> Result<ChainSeparation, SeparationError> {
+    separation_of_chains_with::<K>(p, q, a, b, ChainMethod::Matrices)
+}
+
+/// How section 3 finds σ once Lemma 2's envelopes are built.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum ChainMethod {
+    /// The envelope sweep first (our addition, exact): the envelopes are monotone along the line,
+    /// so the windowed scan of the monotone sweep answers on them within a budget of
+    /// `96N + 1024` candidates, thinned by depth across the line; the matrices when the budget
+    /// runs out (docs/algorithms/separation.md, "The envelope sweep").
+    /// [`SeparationStats::sweep_candidates`] counts its candidates when it answered.
+    #[default]
+    Auto,
+    /// CVV and CVE by SMAWK always: the paper's steps alone ([`separation_of_chains`]).
+    Matrices,
+}
+
+/// [`separation_of_chains`] with the method chosen: [`ChainMethod::Matrices`] is
+/// [`separation_of_chains`]; [`ChainMethod::Auto`] tries the envelope sweep first, whose answer is
+/// the same exact minimum (possibly another pair at the same distance), usually several times
+/// faster.
+///
+/// # Complexity
+/// `O(n_p + n_q)` either way: the envelopes, at most `96(n_p + n_q) + 1024` candidates of the
+/// sweep, then possibly the matrices.
+///
+/// # Errors
+/// As [`separation_of_chains`].
+///
+/// # Examples
+/// ```
+/// use glam::DVec2;
+/// use polydist_predicates::Robust;
+/// use polydist_separation::{ChainMethod, separation_of_chains_with};
+///
+/// // A hook right of the y-axis, whose tip (3, 1) is hidden from the line, and a point left of it.
+/// let hook = [DVec2::new(3.0, 1.0), DVec2::new(4.0, -1.0), DVec2::new(1.0, 0.0), DVec2::new(1.0, 2.0)];
+/// let point = [DVec2::new(-1.0, 1.0)];
+/// for method in [ChainMethod::Auto, ChainMethod::Matrices] {
+///     let s = separation_of_chains_with::<Robust>(&hook, &point, DVec2::ZERO, DVec2::Y, method)?;
+///     assert_eq!(s.pair.distance, 2.0);
+///     assert_eq!(s.pair.point_p, DVec2::new(1.0, 1.0));
+/// }
+/// # Ok::<(), polydist_separation::SeparationError>(())
+/// ```
+pub fn separation_of_chains_with<K: Kernel>(
+    p: &[DVec2],
+    q: &[DVec2],
+    a: DVec2,
+    b: DVec2,
+    method: ChainMethod,
+) -> Result<ChainSeparation, SeparationError> {
+    let (pair, stats, _) = chains::<K>(p, q, (a, b), method, f64::INFINITY)?;
+    Ok(ChainSeparation { pair, stats })
+}
+
+/// [`separation_of_chains_with`] for the crate: the pair, the counts, and whether the envelope
+/// sweep answered. With a finite `cut` (the square of a distance known elsewhere) the sweep skips
+/// candidates bounded strictly above it: the pair is then the nearest when that beats the cut, and
+/// some pair of the chains otherwise.
+pub(crate) fn chains<K: Kernel>(
+    p: &[DVec2],
+    q: &[DVec2],
+    (a, b): (DVec2, DVec2),
+    method: ChainMethod,
+    cut: f64,
+) -> Result<(ClosestPair, SeparationStats, bool), SeparationError> {
     let Validated { frames, on_line } = validate_touching::<K>(p, q, a, b)?;
     let on_line = if on_line.both() {
         on_the_line::<K>(p, q, &on_line)
@@ -156,16 +224,27 @@ pub fn separation_of_chains<K: Kernel>(
     let Some(frames) = frames else {
         // Every vertex on the line: the chains lie on it, and the on-line pair is the answer.
         let c = on_line.ok_or(SeparationError::Inconsistent)?;
-        return Ok(ChainSeparation {
-            pair: build::<K>(c),
-            stats: SeparationStats::default(),
-        });
+        return Ok((build::<K>(c), SeparationStats::default(), false));
     };
-    let (best, stats) = solve::<K, DVec2>(p, q, frames, on_line)?;
-    Ok(ChainSeparation {
-        pair: build::<K>(best),
-        stats,
-    })
+    if method == ChainMethod::Matrices {
+        let (best, stats) = solve::<K, DVec2>(p, q, frames, on_line)?;
+        return Ok((build::<K>(best), stats, false));
+    }
+    let pp = prepare::<K, _>(p, frames.p, Chain::P)?;
+    let qq = prepare::<K, _>(q, frames.q, Chain::Q)?;
+    let Some((swept, tried)) = sweep_envelopes::<K>(&pp, &qq, frames, cut) else {
+        let (best, stats) = solve_prepared::<K, DVec2>(pp, qq, frames, on_line)?;
+        return Ok((build::<K>(best), stats, false));
+    };
+    let best = match on_line {
+        Some(c) if DVec2::cmp_dist2::<K>(c.dist(), swept.dist()) == Ordering::Less => c,
+        _ => swept,
+    };
+    let stats = SeparationStats {
+        sweep_candidates: tried,
+        ..SeparationStats::default()
+    };
+    Ok((build::<K>(best), stats, true))
 }
 
 /// Section 3 on two validated chains (of input points, or of sites: runs clipped to the line's
@@ -317,5 +396,164 @@ pub(crate) fn build<K: Kernel>(c: Cand) -> ClosestPair {
                 feature_q,
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    //! The envelope sweep ([`ChainMethod::Auto`]) against the matrices and the exact scan, with and
+    //! without a cut.
+    use super::*;
+    use crate::brute::scan;
+    use polydist_oracle::SplitMix64;
+    use polydist_predicates::{Exact, Fast, Robust};
+
+    /// The exact squared distance of a reported pair of the chains `p`, `q`.
+    fn pair_dist(p: &[DVec2], q: &[DVec2], pair: &ClosestPair) -> Dist2 {
+        let point = |c: &[DVec2], f: Feature, other: DVec2| match f {
+            Feature::Vertex(i) => Dist2::PointPoint(other, c[i]),
+            Feature::Edge(i) => Dist2::PointSegment(other, c[i], c[i + 1]),
+        };
+        match (pair.feature_p, pair.feature_q) {
+            (Feature::Vertex(i), f) => point(q, f, p[i]),
+            (f, Feature::Vertex(j)) => point(p, f, q[j]),
+            _ => panic!("a pair has a vertex"),
+        }
+    }
+
+    /// A random simple polygon of integer coordinates (a spiky star, a 2-opt polygon, a spiral or
+    /// a comb: far from monotone along any line), a sub-chain of it or the closed boundary.
+    fn shape(rng: &mut SplitMix64) -> Vec<DVec2> {
+        let n = 4 + rng.index(40);
+        let raw = match rng.below(4) {
+            0 => polydist_oracle::star(rng, n, 1 + n / 4),
+            1 => polydist_oracle::two_opt(rng, n.min(30)),
+            2 => polydist_oracle::spiral(3 + rng.below(5) as u32, 1 + rng.below(3) as u32),
+            _ => polydist_oracle::comb(1 + n / 6, 1 + rng.below(3) as u32, 1),
+        };
+        let mut v: Vec<DVec2> = raw.iter().map(|x| (*x * 65_536.0).round()).collect();
+        v.dedup();
+        if v.len() > 2 && v[0] == v[v.len() - 1] {
+            v.pop();
+        }
+        if rng.coin() {
+            let (s, len) = (rng.index(v.len()), 1 + rng.index(v.len()));
+            (0..len).map(|k| v[(s + k) % v.len()]).collect()
+        } else {
+            v.push(v[0]);
+            v
+        }
+    }
+
+    /// Moves `c` so that its least `x` is `at` (integers: exact).
+    fn to_x(c: &[DVec2], at: f64, dy: f64) -> Vec<DVec2> {
+        let m = c.iter().map(|v| v.x).fold(f64::INFINITY, f64::min);
+        c.iter()
+            .map(|v| DVec2::new(v.x - m + at, v.y + dy))
+            .collect()
+    }
+
+    /// Every answer of the envelope sweep is the exact minimum: on chains right and left of a
+    /// line (touching it or not, both at once too, rotated by integer rotations, reversed), with no
+    /// cut against the matrices and the exact scan, and with a cut the nearest pair when the scan's
+    /// beats it, a pair no nearer otherwise. The sweep must answer most cases (the matrices the
+    /// rest); under Fast, nothing panics or loops.
+    #[test]
+    fn envelope_sweep_is_the_exact_minimum() {
+        let mut rng = SplitMix64::new(0xe2e1);
+        let (mut swept, mut cut_below, mut cases) = (0, 0, 0);
+        for round in 0..3_000 {
+            let (p0, q0) = (shape(&mut rng), shape(&mut rng));
+            let touch_p = rng.below(3) == 0;
+            let touch_q = rng.below(3) == 0;
+            let p = to_x(
+                &p0,
+                if touch_p {
+                    0.0
+                } else {
+                    1.0 + rng.below(9) as f64
+                },
+                0.0,
+            );
+            // `Q` left of the line: mirrored, its greatest `x` at 0 or beyond; slid along the line
+            // so that touching chains do not meet.
+            let shift = rng.range_i64(-3_000, 3_000) as f64;
+            let mut q: Vec<DVec2> = to_x(&q0, 0.0, shift)
+                .iter()
+                .map(|v| DVec2::new(-v.x, v.y))
+                .collect();
+            if !touch_q {
+                let gap = 1.0 + rng.below(9) as f64;
+                q.iter_mut().for_each(|v| v.x -= gap);
+            }
+            if touch_p && touch_q {
+                let on = |c: &[DVec2]| c.iter().filter(|v| v.x == 0.0).map(|v| v.y).collect();
+                let (a, b): (Vec<f64>, Vec<f64>) = (on(&p), on(&q));
+                let (alo, ahi) = (
+                    a.iter().copied().fold(f64::INFINITY, f64::min),
+                    a.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+                );
+                if b.iter().any(|&y| y >= alo && y <= ahi) {
+                    continue;
+                }
+            }
+            // An integer rotation (scaled by 5 or 1) of everything, the line with it.
+            let (c, s) = [(1.0, 0.0), (0.0, 1.0), (3.0, 4.0), (-4.0, 3.0)][rng.index(4)];
+            let rot = |v: DVec2| DVec2::new(c * v.x - s * v.y, s * v.x + c * v.y);
+            let (mut p, mut q): (Vec<DVec2>, Vec<DVec2>) = (
+                p.into_iter().map(rot).collect(),
+                q.into_iter().map(rot).collect(),
+            );
+            if rng.coin() {
+                p.reverse();
+            }
+            if rng.coin() {
+                q.reverse();
+            }
+            let (a, b) = (rot(DVec2::ZERO), rot(DVec2::new(0.0, 1.0)));
+            let (a, b) = if rng.coin() { (a, b) } else { (b, a) };
+            if round % 10 == 0 {
+                // Fast: any answer or a typed error, never a panic or a loop.
+                let _ = chains::<Fast>(&p, &q, (a, b), ChainMethod::Auto, f64::INFINITY);
+            }
+            // Rounding may have made a 2-opt polygon non-simple: both methods then say so.
+            let auto = chains::<Robust>(&p, &q, (a, b), ChainMethod::Auto, f64::INFINITY);
+            let matrices = chains::<Robust>(&p, &q, (a, b), ChainMethod::Matrices, f64::INFINITY);
+            let (Ok((got, stats, was_swept)), Ok((m, _, _))) = (auto, matrices) else {
+                continue;
+            };
+            cases += 1;
+            swept += usize::from(was_swept);
+            assert_eq!(was_swept, stats.sweep_candidates > 0, "round {round}");
+            let want = scan::<Exact>(&p, &q, false);
+            let d = |pair: &ClosestPair| pair_dist(&p, &q, pair);
+            assert_eq!(
+                Exact::cmp_dist2(d(&got), d(&want)),
+                Ordering::Equal,
+                "round {round}: {p:?} {q:?} {a:?} {b:?}"
+            );
+            assert_eq!(Exact::cmp_dist2(d(&m), d(&want)), Ordering::Equal);
+            assert!((got.distance - want.distance).abs() <= 4.0 * f64::EPSILON * want.distance);
+            // A cut at a multiple of 1/2 (exact squares).
+            let cut = rng.range_i64(1, 400) as f64 * 0.5;
+            let (below, _, _) = chains::<Robust>(&p, &q, (a, b), ChainMethod::Auto, cut * cut)
+                .unwrap_or_else(|e| panic!("round {round}: {e}"));
+            let beats = Exact::cmp_dist2(
+                d(&want),
+                Dist2::PointPoint(DVec2::ZERO, DVec2::new(cut, 0.0)),
+            ) == Ordering::Less;
+            let order = Exact::cmp_dist2(d(&below), d(&want));
+            if beats {
+                cut_below += 1;
+                assert_eq!(order, Ordering::Equal, "round {round}: cut {cut}");
+            } else {
+                assert_ne!(order, Ordering::Less, "round {round}: cut {cut}");
+            }
+        }
+        eprintln!("envelope sweep: {cases} cases, {swept} swept, {cut_below} below the cut");
+        assert!(
+            cases > 2_000 && swept * 10 > cases * 8 && cut_below > 300,
+            "{cases} cases, {swept} swept, {cut_below} below the cut"
+        );
     }
 }

@@ -11,8 +11,9 @@ use polydist_oracle::{SplitMix64, chain_distance, comb, spiral, star, two_opt, u
 use polydist_polygon::Feature;
 use polydist_predicates::{Exact, Fast, Kernel, Robust};
 use polydist_separation::{
-    CveMatrix, CvvMatrix, compare_edge_entries, compare_entries, perpendicular_envelope,
-    perpendicular_envelope_brute, separation_brute, separation_of_chains,
+    ChainMethod, CveMatrix, CvvMatrix, compare_edge_entries, compare_entries,
+    perpendicular_envelope, perpendicular_envelope_brute, separation_brute, separation_of_chains,
+    separation_of_chains_with,
 };
 use proptest::prelude::*;
 
@@ -319,6 +320,30 @@ fn agree<K: Kernel>(c: &Case, check_matrices: bool) {
         "{}",
         c.name
     );
+    // The envelope sweep first (the default method of the polygon routes): an exact optimum too.
+    let swept = separation_of_chains_with::<K>(&c.p, &c.q, c.a, c.b, ChainMethod::Auto)
+        .unwrap_or_else(|e| panic!("{} ({}) swept: {e}", c.name, K::NAME));
+    let (sp, sq) = (
+        oracle_feature(swept.pair.feature_p),
+        oracle_feature(swept.pair.feature_q),
+    );
+    assert!(
+        exact.is_optimal_pair(sp, sq),
+        "{} ({}) swept: got {:?}, optimal {:?}\np={:?}\nq={:?}\nline {:?} {:?}",
+        c.name,
+        K::NAME,
+        (sp, sq),
+        exact.pairs,
+        c.p,
+        c.q,
+        c.a,
+        c.b
+    );
+    assert!(
+        ulps_error_sqrt(swept.pair.distance, &exact.sq) <= 3.5,
+        "{} swept",
+        c.name
+    );
     let brute = separation_brute::<K>(&c.p, &c.q).unwrap();
     assert!(
         exact.is_optimal_pair(
@@ -621,6 +646,7 @@ fn fast_kernel_terminates() {
                 open,
             );
             let _ = separation_of_chains::<Fast>(&c.p, &c.q, c.a, c.b);
+            let _ = separation_of_chains_with::<Fast>(&c.p, &c.q, c.a, c.b, ChainMethod::Auto);
             let _ = perpendicular_envelope::<Fast>(&c.p, c.a, c.b);
         }
     }

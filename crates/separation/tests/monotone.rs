@@ -206,6 +206,14 @@ fn check_case<K: Kernel>(p: &[DVec2], q: &[DVec2]) -> Result<Option<Outcome>, Te
             "candidates {} for N = {n}",
             stats.sweep_candidates
         );
+    } else if route == Route::EnvelopeSweep {
+        // Section 3's envelope sweep: on the envelopes, at most the visible vertices' budget.
+        prop_assert!(disjoint, "enveloped with meeting hulls\n{}", ctx());
+        prop_assert!(
+            stats.sweep_candidates >= 1 && stats.sweep_candidates <= 96 * n + 1024,
+            "candidates {} for N = {n}",
+            stats.sweep_candidates
+        );
     } else {
         prop_assert_eq!(stats.sweep_candidates, 0);
     }
@@ -232,9 +240,11 @@ fn check_case<K: Kernel>(p: &[DVec2], q: &[DVec2]) -> Result<Option<Outcome>, Te
     check_optimal(&exact, &pair3)
         .map_err(|e| TestCaseError::fail(format!("section 3: {e}\n{}", ctx())))?;
     prop_assert_eq!(stats3.sweep_candidates, 0);
-    // Both methods share the hull step: the sweep replaces section 3 and nothing else.
+    // Both methods share the hull step: the sweeps replace section 3's matrices and nothing else.
     let expected3 = match route {
-        Route::MonotoneSweep | Route::SeparableChains => Route::SeparableChains,
+        Route::MonotoneSweep | Route::EnvelopeSweep | Route::SeparableChains => {
+            Route::SeparableChains
+        }
         r => r,
     };
     prop_assert_eq!(route3, expected3);
@@ -507,7 +517,7 @@ proptest! {
 #[test]
 fn terrains_deterministic_and_route_shares() {
     let (mut sweep, mut chains, mut hull, mut sep, mut skipped, mut disjoint) = (0, 0, 0, 0, 0, 0);
-    let (mut forced_decline, mut declined_with_line) = (0, 0);
+    let (mut forced_decline, mut declined_with_line, mut enveloped) = (0, 0, 0);
     let mut per_vertex = 0.0f64;
     for seed in 0..300 {
         let pair = terrain_pair(seed);
@@ -528,8 +538,9 @@ fn terrains_deterministic_and_route_shares() {
                 let n = (pair.p.len() + pair.q.len()) as f64;
                 per_vertex = per_vertex.max(out.stats.sweep_candidates as f64 / n);
             }
-            Route::SeparableChains => {
+            Route::SeparableChains | Route::EnvelopeSweep => {
                 chains += 1;
+                enveloped += usize::from(out.route == Route::EnvelopeSweep);
                 if out.lines.monotone == 0 {
                     forced_decline += 1;
                 } else {
@@ -543,8 +554,9 @@ fn terrains_deterministic_and_route_shares() {
     }
     eprintln!(
         "terrains: disjoint hulls {disjoint}, sweep {sweep}, section 3 {chains} (no monotone line \
-         {forced_decline}, declined with one {declined_with_line}), hull features {hull}, \
-         separators {sep}, skipped {skipped}; max candidates per vertex {per_vertex:.2}"
+         {forced_decline}, declined with one {declined_with_line}; its envelope sweep answered \
+         {enveloped}), hull features {hull}, separators {sep}, skipped {skipped}; max candidates \
+         per vertex {per_vertex:.2}"
     );
     assert!(disjoint >= 250, "only {disjoint} pairs with disjoint hulls");
     assert!(
@@ -552,6 +564,10 @@ fn terrains_deterministic_and_route_shares() {
         "the sweep answered {sweep} of {disjoint} disjoint-hull pairs"
     );
     assert!(chains >= 10, "section 3 answered only {chains}");
+    assert!(
+        2 * enveloped >= chains,
+        "section 3's envelope sweep answered only {enveloped} of {chains}"
+    );
 }
 
 /// Larger terrains (top chains of up to 122 vertices): longer windows, more candidates, the same
@@ -616,7 +632,10 @@ fn stars_with_non_monotone_facing_chains_decline() {
         if out.lines.monotone == 0 {
             forced += 1;
             assert!(
-                matches!(out.route, Route::SeparableChains | Route::HullFeatures),
+                matches!(
+                    out.route,
+                    Route::SeparableChains | Route::EnvelopeSweep | Route::HullFeatures
+                ),
                 "star seed {seed}: {:?}",
                 out.route
             );
@@ -719,7 +738,8 @@ fn overhang_on_the_facing_side_declines() {
         assert!(out.hulls_disjoint);
         assert!(out.lines.lines >= 1);
         assert_eq!(out.lines.monotone, 0, "seed {seed}: {:?}", out.lines);
-        assert_eq!(out.route, Route::SeparableChains, "overhang seed {seed}");
+        // The monotone sweep declines; section 3's envelopes are monotone, and its sweep answers.
+        assert_eq!(out.route, Route::EnvelopeSweep, "overhang seed {seed}");
         if seed % 4 == 0 {
             check_case::<Exact>(&p, &q).unwrap();
         }

@@ -11,9 +11,9 @@ use polydist_oracle::{
 use polydist_polygon::predicates::{Dist2, Exact, Fast, Kernel, Robust};
 use polydist_polygon::{Feature, Location, SimplePolygon};
 use polydist_separation::{
-    Chain, Intersection, PolygonSeparation, Route, SeparationError, intersection, point_to_polygon,
-    polygon_separation_brute, polyline_to_polygon, segment_to_polygon, separation,
-    separation_brute, separation_of_disjoint,
+    Chain, HullRouteMethod, Intersection, PolygonSeparation, Route, SeparationError, intersection,
+    point_to_polygon, polygon_separation_brute, polyline_to_polygon, segment_to_polygon,
+    separation, separation_brute, separation_of_disjoint, separation_of_disjoint_with,
 };
 use proptest::prelude::*;
 
@@ -324,7 +324,11 @@ fn check_polyline<K: Kernel>(
         Ok(PolygonSeparation::Separated { pair, route, .. }) => {
             prop_assert!(matches!(
                 route,
-                Route::SeparableChains | Route::MonotoneSweep | Route::HullFeatures | Route::Scan
+                Route::SeparableChains
+                    | Route::EnvelopeSweep
+                    | Route::MonotoneSweep
+                    | Route::HullFeatures
+                    | Route::Scan
             ));
             let exact = chain_distance(t, &closed);
             check_optimal(&exact, &pair)?;
@@ -541,10 +545,11 @@ fn polyline_errors_say_what_and_where() {
 }
 
 /// Both routes of the fast path run on the random family (a guard against a generator that never
-/// reaches section 3).
+/// reaches section 3), and where section 3 answers, its matrices alone
+/// (`HullRouteMethod::Section3`) find the same exact distance as its envelope sweep.
 #[test]
 fn both_routes_are_exercised() {
-    let (mut hulls, mut chains) = (0, 0);
+    let (mut hulls, mut chains, mut swept) = (0, 0, 0);
     for seed in 0..200 {
         let (p, q) = random_case(seed);
         let (Ok(sp), Ok(sq)) = (SimplePolygon::try_new(&p), SimplePolygon::try_new(&q)) else {
@@ -556,15 +561,32 @@ fn both_routes_are_exercised() {
                 ..
             }) => hulls += 1,
             Ok(PolygonSeparation::Separated {
-                route: Route::SeparableChains,
+                pair,
+                route: route @ (Route::SeparableChains | Route::EnvelopeSweep),
                 ..
-            }) => chains += 1,
+            }) => {
+                chains += 1;
+                swept += usize::from(route == Route::EnvelopeSweep);
+                let Ok(PolygonSeparation::Separated {
+                    pair: m,
+                    route: Route::SeparableChains,
+                    ..
+                }) = separation_of_disjoint_with::<Robust>(&sp, &sq, HullRouteMethod::Section3)
+                else {
+                    panic!("seed {seed}: section 3's matrices")
+                };
+                let exact = boundary_distance(&p, &q);
+                for (what, got) in [("swept", &pair), ("matrices", &m)] {
+                    check_optimal(&exact, got)
+                        .unwrap_or_else(|e| panic!("seed {seed} ({what}): {e}"));
+                }
+            }
             _ => {}
         }
     }
     assert!(
-        hulls >= 10 && chains >= 10,
-        "hull route {hulls}, chain route {chains}"
+        hulls >= 10 && chains >= 10 && swept * 2 >= chains,
+        "hull route {hulls}, section 3 {chains} (its envelope sweep {swept})"
     );
 }
 
