@@ -36,9 +36,10 @@
 //! While the walk is in view, its edge replaces the envelope node by node until it ends in front
 //! of it or goes behind a visible vertex (a new gap). Each edge costs `O(1)` tests plus one per node
 //! it removes for good, so the walk is `O(n)`. Nodes at one true height are then collapsed to the
-//! nearest (the first), and a closed chain's closing edge is merged in by one linear merge of two
-//! height-sorted envelopes. `docs/algorithms/separation.md` ("The linear scan") has the cases and
-//! the proofs.
+//! nearest (the first), and a closed chain's closing edge is merged in by a merge of two
+//! height-sorted envelopes over the closing edge's height range only (the chain is first rotated so
+//! that its closing edge is one of least height extent). `docs/algorithms/separation.md` ("The
+//! linear scan") has the cases and the proofs.
 
 use core::cmp::Ordering;
 
@@ -462,6 +463,36 @@ fn clean<V: Vertex>(chain: &[V], which: Chain) -> Result<Clean<V>, SeparationErr
     Ok(Clean { v, idx, edges })
 }
 
+impl<V: Vertex> Clean<V> {
+    /// Rotates a closed chain so that its closing edge (merged in after the walk, [`prepare`]) is
+    /// the edge of least height extent along the frame's line, as `f64` approximations estimate
+    /// it: the merge then meets few breakpoints. Only the work depends on the choice (the
+    /// envelope of a closed chain does not depend on where its walk starts); positions, caller
+    /// indices and edges move together. `O(n)`, no predicate.
+    fn close_at_shortest(&mut self, frame: Frame) {
+        let m = self.v.len();
+        let d = frame.l1 - frame.l0;
+        let t = |x: V| x.approx().dot(d);
+        // Edge `k` joins positions `k` and `k + 1` (the last one, `m − 1` and 0).
+        let extent = |k: usize| (t(self.v[(k + 1) % m]) - t(self.v[k])).abs();
+        let Some(z) = (0..m).min_by(|&x, &y| extent(x).total_cmp(&extent(y))) else {
+            return;
+        };
+        if z + 1 == m {
+            return;
+        }
+        // New position `k` is old position `z + 1 + k`: old edge `z` becomes the closing edge.
+        let shift = z + 1;
+        self.v.rotate_left(shift);
+        self.idx.rotate_left(shift);
+        let mut callers: Vec<usize> = self.edges.iter().map(|e| e.2).collect();
+        callers.rotate_left(shift);
+        for (k, (e, caller)) in self.edges.iter_mut().zip(callers).enumerate() {
+            *e = (k, (k + 1) % m, caller);
+        }
+    }
+}
+
 /// The envelope of a cleaned chain, as visible vertices and one edge between each two.
 fn to_prepared<K: Kernel, V: Vertex>(
     c: &Ctx<'_, V>,
@@ -819,8 +850,9 @@ fn scan<K: Kernel, V: Vertex>(c: &Ctx<'_, V>, m: usize) -> Result<(Vec<usize>, V
 /// and the edge carrying the envelope between each two, with symbolic shadow points.
 ///
 /// One walk along the open chain ([`scan`]) under the symbolic shear, whose breakpoints at one
-/// true height are then collapsed to the nearest; a closed chain's closing edge is merged in
-/// afterwards (one linear merge).
+/// true height are then collapsed to the nearest; a closed chain, rotated so that its closing edge
+/// is one of least height extent, has that edge merged in afterwards ([`merge_leaf`]: the
+/// breakpoints within its height range only).
 ///
 /// # Complexity
 /// `O(n)` degree-2 tests.
@@ -834,24 +866,76 @@ pub(crate) fn prepare<K: Kernel, V: Vertex>(
     frame: Frame,
     which: Chain,
 ) -> Result<Prepared<V>, SeparationError> {
-    let cl = clean(chain, which)?;
+    let mut cl = clean(chain, which)?;
     let m = cl.v.len();
+    // A closed chain has as many edges as vertices, its closing edge (`m − 1` → 0) last.
+    let closed = m > 0 && cl.edges.len() == m;
+    if closed {
+        cl.close_at_shortest(frame);
+    }
     let (lohi, sheared) = orient_edges::<K, V>(frame, &cl);
     let s = Ctx::new(frame, &cl, &sheared, true);
     let c = Ctx::new(frame, &cl, &lohi, false);
     let (nodes, edges) = scan::<K, V>(&s, m).map_err(|w| c.bad(w, which))?;
     let mut level = Level::with_capacity(nodes.len() + 2);
     collapse::<K, V>(&c, &nodes, &edges, 0, &mut level);
-    // A closed chain has as many edges as vertices, its closing edge (`m − 1` → 0) last.
-    if m == 0 || cl.edges.len() != m {
+    if !closed {
         return to_prepared::<K, V>(&c, &cl, level.env(0), which, false);
     }
     let z = m - 1;
     let (u, w, _) = cl.edges[z];
     leaf::<K, V>(&c, z, (u, w), &mut level);
     let mut out = Level::with_capacity(level.bps.len());
-    merge::<K, V>(&c, level.env(0), level.env(1), &mut out).map_err(|w| c.bad(w, which))?;
+    merge_leaf::<K, V>(&c, level.env(0), level.env(1), &mut out).map_err(|w| c.bad(w, which))?;
     to_prepared::<K, V>(&c, &cl, out.env(0), which, false)
+}
+
+/// [`merge`] of an envelope `a` with the envelope `leaf` of a single edge, touching only the
+/// breakpoints of `a` within the edge's height range and one on either side: the others are
+/// copied (the edge is no part of the union there, so their points and gaps stay). The range is
+/// found by two binary searches of exact height comparisons. `O(log |a| + k)` degree-2 tests for
+/// the `k` breakpoints of `a` within the edge's heights, plus the copy.
+fn merge_leaf<K: Kernel, V: Vertex>(
+    c: &Ctx<'_, V>,
+    a: Env<'_>,
+    leaf: Env<'_>,
+    out: &mut Level,
+) -> Result<(), Bad> {
+    let (Some(bot), Some(top)) = (leaf.bps.first(), leaf.bps.last()) else {
+        return merge::<K, V>(c, a, leaf, out);
+    };
+    let (bot, top) = (c.v[bot.y], c.v[top.y]);
+    let h = |bp: &Bp| c.v[bp.y];
+    // `a`'s breakpoints strictly below the edge's bottom, and those at or below its top.
+    let lo = a
+        .bps
+        .partition_point(|bp| c.frame.cmp_height::<K, _>(h(bp), bot) == Ordering::Less);
+    let hi = a
+        .bps
+        .partition_point(|bp| c.frame.cmp_height::<K, _>(h(bp), top) != Ordering::Greater);
+    let (from, to) = (lo.saturating_sub(1), (hi + 1).min(a.bps.len()));
+    let start = out.bps.len();
+    out.bps.extend_from_slice(&a.bps[..from]);
+    let mut mid = Level::with_capacity(to - from + leaf.bps.len());
+    merge::<K, V>(
+        c,
+        Env {
+            bps: &a.bps[from..to],
+        },
+        leaf,
+        &mut mid,
+    )?;
+    out.bps.extend_from_slice(&mid.bps);
+    // The last breakpoint of the middle is `a`'s (its gap, the edge above, was cut off by the
+    // slice) unless the middle reaches `a`'s top.
+    if to < a.bps.len() {
+        if let (Some(last), Some(orig)) = (out.bps.last_mut(), a.bps.get(to - 1)) {
+            last.gap = orig.gap;
+        }
+    }
+    out.bps.extend_from_slice(&a.bps[to..]);
+    out.close(start);
+    Ok(())
 }
 
 /// Appends the walk's nodes (`nodes`, with the edge above each in `edges`), offset by `off` into
