@@ -194,37 +194,26 @@ pub(crate) fn sweep_envelopes<K: Kernel>(
         cut,
         budget(n),
     )?;
-    let edge = |c: &Prepared, k: usize| c.edges.get(k).copied().flatten();
+    // Visible vertex `i` of `x` against envelope edge `k` of `y` (`P`'s edge when `p_side`).
+    let ve = |x: &Prepared, i: usize, y: &Prepared, k: usize, p_side: bool| {
+        let e = y.edges.get(k).copied().flatten()?;
+        Some(Cand::Ve {
+            v: x.pts[i],
+            j: x.idx[i],
+            a: e.a,
+            ia: e.ia,
+            b: e.b,
+            ib: e.ib,
+            edge: e.caller,
+            p_side,
+        })
+    };
     let cand = match w.features() {
         (Feature::Vertex(i), Feature::Vertex(j)) => {
             Cand::Vv(pp.pts[i], pp.idx[i], qq.pts[j], qq.idx[j])
         }
-        (Feature::Vertex(i), Feature::Edge(k)) => {
-            let e = edge(qq, k)?;
-            Cand::Ve {
-                v: pp.pts[i],
-                j: pp.idx[i],
-                a: e.a,
-                ia: e.ia,
-                b: e.b,
-                ib: e.ib,
-                edge: e.caller,
-                p_side: false,
-            }
-        }
-        (Feature::Edge(k), Feature::Vertex(j)) => {
-            let e = edge(pp, k)?;
-            Cand::Ve {
-                v: qq.pts[j],
-                j: qq.idx[j],
-                a: e.a,
-                ia: e.ia,
-                b: e.b,
-                ib: e.ib,
-                edge: e.caller,
-                p_side: true,
-            }
-        }
+        (Feature::Vertex(i), Feature::Edge(k)) => ve(pp, i, qq, k, false)?,
+        (Feature::Edge(k), Feature::Vertex(j)) => ve(qq, j, pp, k, true)?,
         // A scan's winner has a vertex; declining is safe anyway.
         (Feature::Edge(_), Feature::Edge(_)) => return None,
     };

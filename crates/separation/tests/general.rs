@@ -294,56 +294,45 @@ fn finish(
 /// envelopes against their twins, and (small cases) every matrix.
 fn agree<K: Kernel>(c: &Case, check_matrices: bool) {
     assert!(simple_chain(&c.p) && simple_chain(&c.q), "{}", c.name);
-    let got = separation_of_chains::<K>(&c.p, &c.q, c.a, c.b)
-        .unwrap_or_else(|e| panic!("{} ({}): {e}\np={:?}\nq={:?}", c.name, K::NAME, c.p, c.q));
     let exact = chain_distance(&c.p, &c.q);
-    let (fp, fq) = (
-        oracle_feature(got.pair.feature_p),
-        oracle_feature(got.pair.feature_q),
-    );
-    assert!(
-        exact.is_optimal_pair(fp, fq),
-        "{} ({}): got {:?} ({} vs exact {:?}), optimal {:?}\np={:?}\nq={:?}\nline {:?} {:?}",
-        c.name,
-        K::NAME,
-        (fp, fq),
-        got.pair.squared_distance,
-        polydist_oracle::to_f64_nearest(&exact.sq),
-        exact.pairs,
-        c.p,
-        c.q,
-        c.a,
-        c.b
-    );
-    assert!(
-        ulps_error_sqrt(got.pair.distance, &exact.sq) <= 3.5,
-        "{}",
-        c.name
-    );
-    // The envelope sweep first (the default method of the polygon routes): an exact optimum too.
-    let swept = separation_of_chains_with::<K>(&c.p, &c.q, c.a, c.b, ChainMethod::Auto)
-        .unwrap_or_else(|e| panic!("{} ({}) swept: {e}", c.name, K::NAME));
-    let (sp, sq) = (
-        oracle_feature(swept.pair.feature_p),
-        oracle_feature(swept.pair.feature_q),
-    );
-    assert!(
-        exact.is_optimal_pair(sp, sq),
-        "{} ({}) swept: got {:?}, optimal {:?}\np={:?}\nq={:?}\nline {:?} {:?}",
-        c.name,
-        K::NAME,
-        (sp, sq),
-        exact.pairs,
-        c.p,
-        c.q,
-        c.a,
-        c.b
-    );
-    assert!(
-        ulps_error_sqrt(swept.pair.distance, &exact.sq) <= 3.5,
-        "{} swept",
-        c.name
-    );
+    // The paper's matrices, and the envelope sweep first (the default method of the polygon
+    // routes): each an exact optimum.
+    for method in [ChainMethod::Matrices, ChainMethod::Auto] {
+        let got =
+            separation_of_chains_with::<K>(&c.p, &c.q, c.a, c.b, method).unwrap_or_else(|e| {
+                panic!(
+                    "{} ({}, {method:?}): {e}\np={:?}\nq={:?}",
+                    c.name,
+                    K::NAME,
+                    c.p,
+                    c.q
+                )
+            });
+        let (fp, fq) = (
+            oracle_feature(got.pair.feature_p),
+            oracle_feature(got.pair.feature_q),
+        );
+        assert!(
+            exact.is_optimal_pair(fp, fq),
+            "{} ({}, {method:?}): got {:?} ({} vs exact {:?}), optimal {:?}\np={:?}\nq={:?}\nline \
+             {:?} {:?}",
+            c.name,
+            K::NAME,
+            (fp, fq),
+            got.pair.squared_distance,
+            polydist_oracle::to_f64_nearest(&exact.sq),
+            exact.pairs,
+            c.p,
+            c.q,
+            c.a,
+            c.b
+        );
+        assert!(
+            ulps_error_sqrt(got.pair.distance, &exact.sq) <= 3.5,
+            "{} ({method:?})",
+            c.name
+        );
+    }
     let brute = separation_brute::<K>(&c.p, &c.q).unwrap();
     assert!(
         exact.is_optimal_pair(

@@ -516,7 +516,12 @@ pub fn hooked_sawtooth(t: usize) -> Vec<DVec2> {
 /// # Panics
 /// Panics if `t` is 0.
 pub fn hooked_teeth_facing(t: usize) -> (Vec<DVec2>, Vec<DVec2>) {
-    let p = hooked_sawtooth(t);
+    facing_mirror(hooked_sawtooth(t))
+}
+
+/// A slab and its mirror image `x ↦ 10.25 − x` moved up by one, counter-clockwise (the order
+/// reversed, as the reflection turns it).
+fn facing_mirror(p: Vec<DVec2>) -> (Vec<DVec2>, Vec<DVec2>) {
     let q: Vec<DVec2> = p
         .iter()
         .rev()
@@ -532,11 +537,5 @@ pub fn hooked_teeth_facing(t: usize) -> (Vec<DVec2>, Vec<DVec2>) {
 /// # Panics
 /// Panics if `t` is 0.
 pub fn sawteeth_facing(t: usize) -> (Vec<DVec2>, Vec<DVec2>) {
-    let p = sawtooth(t);
-    let q: Vec<DVec2> = p
-        .iter()
-        .rev()
-        .map(|v| DVec2::new(10.25 - v.x, v.y + 1.0))
-        .collect();
-    (p, q)
+    facing_mirror(sawtooth(t))
 }
