@@ -196,17 +196,8 @@ pub(crate) fn sweep_envelopes<K: Kernel>(
     )?;
     // Visible vertex `i` of `x` against envelope edge `k` of `y` (`P`'s edge when `p_side`).
     let ve = |x: &Prepared, i: usize, y: &Prepared, k: usize, p_side: bool| {
-        let e = y.edges.get(k).copied().flatten()?;
-        Some(Cand::Ve {
-            v: x.pts[i],
-            j: x.idx[i],
-            a: e.a,
-            ia: e.ia,
-            b: e.b,
-            ib: e.ib,
-            edge: e.caller,
-            p_side,
-        })
+        let e = y.edges.get(k)?.as_ref()?;
+        Some(Cand::on_edge(x.pts[i], x.idx[i], e, p_side))
     };
     let cand = match w.features() {
         (Feature::Vertex(i), Feature::Vertex(j)) => {

@@ -8,7 +8,7 @@ use monotone_minima::row_minima_by;
 use polydist_polygon::Feature;
 use polydist_predicates::{Dist2, Kernel, Sign};
 
-use crate::chain::{Frames, Prepared};
+use crate::chain::{EnvEdge, Frames, Prepared};
 use crate::chain::{OnLine, Validated, validate_touching};
 use crate::construct::{vertex_edge, vertex_vertex};
 use crate::cve::{CveMatrix, EdgeEntry, compare_edge_entries};
@@ -41,6 +41,21 @@ pub(crate) enum Cand<V = DVec2> {
 }
 
 impl<V: Vertex> Cand<V> {
+    /// The vertex `v` (caller `j`) against the whole edge carrying envelope edge `e` of the other
+    /// chain (`P`'s when `p_side`).
+    pub(crate) fn on_edge(v: V, j: usize, e: &EnvEdge<V>, p_side: bool) -> Cand<V> {
+        Cand::Ve {
+            v,
+            j,
+            a: e.a,
+            ia: e.ia,
+            b: e.b,
+            ib: e.ib,
+            edge: e.caller,
+            p_side,
+        }
+    }
+
     pub(crate) fn dist(&self) -> Dist2<V> {
         match *self {
             Cand::Vv(p, _, q, _) => Dist2::PointPoint(p, q),
@@ -67,18 +82,13 @@ fn cve<K: Kernel, V: Vertex>(m: &CveMatrix<K, V>, p_side: bool) -> Option<Cand<V
         }
     }
     let (i, j, _) = best?;
-    let e = m.real_edge(m.row_edge(i));
     let col = m.column(j);
-    Some(Cand::Ve {
-        v: col.pt,
-        j: col.idx,
-        a: e.a,
-        ia: e.ia,
-        b: e.b,
-        ib: e.ib,
-        edge: e.caller,
+    Some(Cand::on_edge(
+        col.pt,
+        col.idx,
+        m.real_edge(m.row_edge(i)),
         p_side,
-    })
+    ))
 }
 
 /// The separation `σ(P, Q)` of two simple polygonal chains `p` and `q` separated by the line
