@@ -12,7 +12,7 @@
 use glam::DVec2;
 use polydist_oracle::{
     Contact, SplitMix64, boundary_distance, contact_status_convex, feature_sq_dist,
-    sawteeth_facing, star,
+    hooked_teeth_facing, sawteeth_facing, star,
 };
 use polydist_polygon::SimplePolygon;
 use polydist_polygon::predicates::{Exact, Fast, Kernel, Orientation, Robust, Sign};
@@ -956,6 +956,58 @@ fn sawteeth_candidates_per_vertex_stay_bounded() {
         let ratio = stats.sweep_candidates as f64 / n as f64;
         eprintln!(
             "sawteeth t={t}: N={n}, candidates {} ({ratio:.3} per vertex)",
+            stats.sweep_candidates
+        );
+        ratios.push((t, ratio));
+        assert!(ratio <= 6.0, "t = {t}: {ratio} candidates per vertex");
+        let Ok(PolygonSeparation::Separated {
+            pair: s3,
+            route: r3,
+            ..
+        }) = separation_of_disjoint_with::<Robust>(&sp, &sq, HullRouteMethod::Section3)
+        else {
+            panic!("disjoint")
+        };
+        assert_eq!(r3, Route::SeparableChains);
+        assert!(
+            (pair.distance - s3.distance).abs() <= 4.0 * f64::EPSILON * s3.distance,
+            "t = {t}: sweep {} vs section 3 {}",
+            pair.distance,
+            s3.distance
+        );
+        if t <= 64 {
+            let exact = boundary_distance(&p, &q);
+            check_optimal(&exact, &pair).unwrap();
+            check_optimal(&exact, &s3).unwrap();
+        }
+    }
+    let at64 = ratios.iter().find(|r| r.0 == 64).unwrap().1;
+    let last = ratios.last().unwrap().1;
+    assert!(last <= 1.1 * at64, "candidates per vertex grow: {ratios:?}");
+}
+
+/// Hooked saw-teeth (no facing chain monotone): section 3's envelope sweep answers with a bounded
+/// number of candidates per vertex, not growing with the number of teeth, and its distance is the
+/// oracle's (small sizes) and that of section 3's matrices (all sizes).
+#[test]
+fn hooked_teeth_envelope_candidates_per_vertex_stay_bounded() {
+    let mut ratios = Vec::new();
+    for t in [16usize, 64, 256, 1024, 4096] {
+        let (p, q) = hooked_teeth_facing(t);
+        let (sp, sq) = (
+            SimplePolygon::try_new(&p).unwrap(),
+            SimplePolygon::try_new(&q).unwrap(),
+        );
+        let Ok(PolygonSeparation::Separated { pair, route, stats }) =
+            separation_of_disjoint::<Robust>(&sp, &sq)
+        else {
+            panic!("disjoint")
+        };
+        assert_eq!(route, Route::EnvelopeSweep, "t = {t}");
+        let n = p.len() + q.len();
+        let ratio = stats.sweep_candidates as f64 / n as f64;
+        eprintln!(
+            "hooked teeth t={t}: N={n}, candidates {} ({ratio:.3} per vertex)",
             stats.sweep_candidates
         );
         ratios.push((t, ratio));
