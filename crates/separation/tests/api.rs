@@ -145,8 +145,8 @@ mod never_panics {
     use glam::DVec2;
     use polydist_predicates::{Fast, Robust};
     use polydist_separation::{
-        closest_visible_vertices, closest_visible_vertices_brute, separation_brute,
-        separation_of_chains,
+        ChainMethod, closest_visible_vertices, closest_visible_vertices_brute, separation_brute,
+        separation_of_chains, separation_of_chains_with,
     };
     use proptest::prelude::*;
 
@@ -172,6 +172,8 @@ mod never_panics {
             let (a, b) = (DVec2::new(a.0, a.1), DVec2::new(b.0, b.1));
             let _ = separation_of_chains::<Robust>(&p, &q, a, b);
             let _ = separation_of_chains::<Fast>(&p, &q, a, b);
+            let _ = separation_of_chains_with::<Robust>(&p, &q, a, b, ChainMethod::Auto);
+            let _ = separation_of_chains_with::<Fast>(&p, &q, a, b, ChainMethod::Auto);
             let _ = closest_visible_vertices::<Robust>(&p, &q, a, b);
             let _ = closest_visible_vertices::<Fast>(&p, &q, a, b);
             let _ = closest_visible_vertices_brute::<Robust>(&p, &q, a, b);
@@ -189,6 +191,10 @@ mod never_panics {
             if let (true, Ok(s)) = (simple, separation_of_chains::<Robust>(&p, &q, DVec2::ZERO, DVec2::Y)) {
                 let b = separation_brute::<Robust>(&p, &q).unwrap();
                 prop_assert_eq!(s.pair.squared_distance, b.squared_distance);
+                let swept = separation_of_chains_with::<Robust>(
+                    &p, &q, DVec2::ZERO, DVec2::Y, ChainMethod::Auto,
+                ).unwrap();
+                prop_assert_eq!(swept.pair.squared_distance, b.squared_distance);
             }
         }
     }
