@@ -4,11 +4,11 @@
 
 mod common;
 
-use common::{Case, simple_chain};
+use common::pairs::oracle_feature;
+use common::{Case, assert_optimal, simple_chain};
 use glam::DVec2;
 use monotone_minima::{brute_force_row_minima_by, check_totally_monotone_by, row_minima_by};
-use polydist_oracle::{SplitMix64, chain_distance, comb, spiral, star, two_opt, ulps_error_sqrt};
-use polydist_polygon::Feature;
+use polydist_oracle::{SplitMix64, chain_distance, comb, spiral, star, two_opt};
 use polydist_predicates::{Exact, Fast, Kernel, Robust};
 use polydist_separation::{
     ChainMethod, CveMatrix, CvvMatrix, compare_edge_entries, compare_entries,
@@ -18,13 +18,6 @@ use polydist_separation::{
 use proptest::prelude::*;
 
 type I = (i64, i64);
-
-fn oracle_feature(f: Feature) -> polydist_oracle::Feature {
-    match f {
-        Feature::Vertex(i) => polydist_oracle::Feature::Vertex(i),
-        Feature::Edge(i) => polydist_oracle::Feature::Edge(i),
-    }
-}
 
 /// Integer coordinates of a generator's polygon (its coordinates are multiples of `2^-bits`).
 fn ints(poly: &[DVec2], bits: i32) -> Vec<I> {
@@ -308,30 +301,7 @@ fn agree<K: Kernel>(c: &Case, check_matrices: bool) {
                     c.q
                 )
             });
-        let (fp, fq) = (
-            oracle_feature(got.pair.feature_p),
-            oracle_feature(got.pair.feature_q),
-        );
-        assert!(
-            exact.is_optimal_pair(fp, fq),
-            "{} ({}, {method:?}): got {:?} ({} vs exact {:?}), optimal {:?}\np={:?}\nq={:?}\nline \
-             {:?} {:?}",
-            c.name,
-            K::NAME,
-            (fp, fq),
-            got.pair.squared_distance,
-            polydist_oracle::to_f64_nearest(&exact.sq),
-            exact.pairs,
-            c.p,
-            c.q,
-            c.a,
-            c.b
-        );
-        assert!(
-            ulps_error_sqrt(got.pair.distance, &exact.sq) <= 3.5,
-            "{} ({method:?})",
-            c.name
-        );
+        assert_optimal(c, &format!("{}, {method:?}", K::NAME), &exact, &got.pair);
     }
     let brute = separation_brute::<K>(&c.p, &c.q).unwrap();
     assert!(

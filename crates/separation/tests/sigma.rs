@@ -3,9 +3,9 @@
 
 mod common;
 
-use common::{Case, combs, random_case};
+use common::{Case, assert_optimal, combs, random_case};
 use monotone_minima::{brute_force_row_minima_by, check_totally_monotone_by, row_minima_by};
-use polydist_oracle::{SplitMix64, chain_distance, ulps_error_sqrt};
+use polydist_oracle::{SplitMix64, chain_distance};
 use polydist_polygon::Feature;
 use polydist_predicates::{Exact, Fast, Kernel, Robust};
 use polydist_separation::{
@@ -13,37 +13,12 @@ use polydist_separation::{
 };
 use proptest::prelude::*;
 
-fn oracle_feature(f: Feature) -> polydist_oracle::Feature {
-    match f {
-        Feature::Vertex(i) => polydist_oracle::Feature::Vertex(i),
-        Feature::Edge(i) => polydist_oracle::Feature::Edge(i),
-    }
-}
-
 /// Checks one case (σ, features, matrices); returns `true` so call sites can count checked cases.
 fn agree<K: Kernel>(c: &Case, check_matrices: bool) -> bool {
     let got = separation_of_chains::<K>(&c.p, &c.q, c.a, c.b)
         .unwrap_or_else(|e| panic!("{}: {e}", c.name));
     let exact = chain_distance(&c.p, &c.q);
-    let fp = oracle_feature(got.pair.feature_p);
-    let fq = oracle_feature(got.pair.feature_q);
-    assert!(
-        exact.is_optimal_pair(fp, fq),
-        "{} ({}): got {:?} ({} vs exact {:?}), optimal {:?}\np={:?}\nq={:?}",
-        c.name,
-        K::NAME,
-        (fp, fq),
-        got.pair.squared_distance,
-        polydist_oracle::to_f64_nearest(&exact.sq),
-        exact.pairs,
-        c.p,
-        c.q
-    );
-    assert!(
-        ulps_error_sqrt(got.pair.distance, &exact.sq) <= 3.5,
-        "{}",
-        c.name
-    );
+    assert_optimal(c, K::NAME, &exact, &got.pair);
     let brute = separation_brute::<K>(&c.p, &c.q).unwrap();
     assert_eq!(
         brute.squared_distance, got.pair.squared_distance,

@@ -16,6 +16,38 @@ pub(crate) struct Case {
     pub(crate) name: String,
 }
 
+/// `pair`, found for case `c` by `what`, is an exact optimum of the oracle's answer `exact`, its
+/// distance within 3.5 ulps; panics with the case otherwise.
+pub(crate) fn assert_optimal(
+    c: &Case,
+    what: &str,
+    exact: &polydist_oracle::ExactDistance,
+    pair: &polydist_separation::ClosestPair,
+) {
+    let (fp, fq) = (
+        pairs::oracle_feature(pair.feature_p),
+        pairs::oracle_feature(pair.feature_q),
+    );
+    assert!(
+        exact.is_optimal_pair(fp, fq),
+        "{} ({what}): got {:?} ({} vs exact {:?}), optimal {:?}\np={:?}\nq={:?}\nline {:?} {:?}",
+        c.name,
+        (fp, fq),
+        pair.squared_distance,
+        polydist_oracle::to_f64_nearest(&exact.sq),
+        exact.pairs,
+        c.p,
+        c.q,
+        c.a,
+        c.b
+    );
+    assert!(
+        polydist_oracle::ulps_error_sqrt(pair.distance, &exact.sq) <= 3.5,
+        "{} ({what})",
+        c.name
+    );
+}
+
 /// Strictly increasing random integer heights (`n` of them) in `[0, span)`, or with repeats when
 /// `ties` (for runs perpendicular to the line).
 fn heights(rng: &mut SplitMix64, n: usize, span: i64, ties: bool) -> Vec<i64> {
