@@ -12,7 +12,7 @@ use polydist_predicates::{Dist2, Kernel, Sign, is_valid_coordinate};
 use crate::chain::validate;
 use crate::construct::{vertex_edge, vertex_vertex};
 use crate::error::{Chain, SeparationError};
-use crate::monotone::Lens;
+use crate::monotone::{Chord, Lens};
 use crate::result::ClosestPair;
 
 /// `true` when the open segment `(p, q)` meets the closed segment `[a, b]` (exact under `K`; eight
@@ -957,17 +957,22 @@ impl Window {
 /// one too (exact keys are sorted); the first vertex certainly beyond the right end has every
 /// later one beyond it. Inside the window the other chain is taken in blocks of [`BLOCK`]
 /// consecutive vertices (with the edges between them): a block whose box of keys is certainly
-/// farther than `U` is skipped whole, and each candidate of the other blocks is skipped when its
-/// own keys put it certainly farther than `U`, before its distance is bounded. On inputs whose
-/// windows along the line are crowded but whose depths differ by about the clearance (walls of a
-/// corridor, sampled far more finely than it is wide) this leaves a few candidates a vertex.
+/// farther than `U` is skipped whole, and so is one whose box in its own chord's frame is
+/// ([`Chord`]: blocks tilted against the line, zigzags, arcs), and each candidate of the other
+/// blocks is skipped when its own keys put it certainly farther than `U`, before its distance is
+/// bounded. On inputs whose windows along the line are crowded but whose depths differ by about
+/// the clearance (walls of a corridor, sampled far more finely than it is wide) this leaves a few
+/// candidates a vertex; on a star whose tips all face a zigzag wall tilted against the line within
+/// a hair of the clearance, a few dozen.
 ///
 /// The answer is the nearest pair of the chains (ties to the first found), or `None` once more
 /// than `budget` candidates have been tried: the count is what the caller bounds the work by. After
 /// the first pass the work for the best so far is counted before any candidate is evaluated: the
 /// blocks the windows meet (their ends moved alone, `O(n_p + n_q)`), then, when those fit the
 /// budget, the candidates of the blocks not skipped whole; when either exceeds the budget, `None`
-/// at once. With a finite `cut` (the square of a distance known elsewhere), candidates bounded
+/// at once. When that count ran, its blocks are the ones tried (a block kept for the count's best
+/// is kept for any later, nearer best; it is tested again only once the best has fallen by more
+/// than a sixty-fourth), so the boxes are not tested twice. With a finite `cut` (the square of a distance known elsewhere), candidates bounded
 /// strictly above it are skipped and the windows are never wider than for `cut`, as in
 /// [`scan_winner_below`]: the winner is the nearest pair when that is strictly nearer than the
 /// known distance, some pair of the chains otherwise.
@@ -1029,7 +1034,9 @@ pub(crate) fn scan_windowed<K: Kernel, C: Points + ?Sized>(
     }
     // Windows of a few candidates a vertex (saw-teeth: about three and a half) are taken whole:
     // blocks and keys would cost more than they save.
-    let blocks = (whole > SPARSE * (np + nq)).then(|| [Blocks::of(kq), Blocks::of(kp)]);
+    let blocks = (whole > SPARSE * (np + nq)).then(|| [Blocks::of(q, kq), Blocks::of(p, kp)]);
+    // Vertex `x` of the pass's own chain.
+    let own = |pass: usize, x: usize| if pass == 0 { p.at(x) } else { q.at(x) };
     // The parts of the current window to try, reused from vertex to vertex.
     let mut kept = Vec::new();
     let mut ahead = tried;
@@ -1037,17 +1044,20 @@ pub(crate) fn scan_windowed<K: Kernel, C: Points + ?Sized>(
     // gives up early (crowded windows cost box tests a vertex by the dozen, and the count would
     // otherwise run most of the way first). Only the caller's choice of method depends on it.
     let mut done = 0usize;
-    for pass in (0..2).filter(|_| whole > budget) {
+    let mut plan: [Vec<Planned>; 2] = [Vec::new(), Vec::new()];
+    let planned = whole > budget;
+    for pass in (0..2).filter(|_| planned) {
         let ((kx, ky), by) = (sides(pass), blocks.as_ref().map(|b| &b[pass]));
         let mut window = Window::default();
-        for (&t, &d) in kx.t.iter().zip(kx.d) {
+        for (x, (&t, &d)) in kx.t.iter().zip(kx.d).enumerate() {
             let span = Span::of(window.around(t, ky.t, w), ky.t.len());
             match by {
-                Some(by) => by.survivors(&span, (t, d), lens, u2, &mut kept),
-                None => kept.push((span.vs, span.es)),
+                Some(by) => by.survivors(&span, (own(pass, x), (t, d)), lens, u2, &mut kept),
+                None => kept.push((usize::MAX, span.vs, span.es)),
             }
-            for (vs, es) in kept.drain(..) {
+            for (k, vs, es) in kept.drain(..) {
                 ahead += es.len() + if pass == 0 { vs.len() } else { 0 };
+                plan[pass].push((x, k, vs, es));
             }
             done += 1;
             let heading = done % EXTRAPOLATE == 0
@@ -1056,6 +1066,24 @@ pub(crate) fn scan_windowed<K: Kernel, C: Points + ?Sized>(
                 return None;
             }
         }
+    }
+    if planned {
+        for pass in 0..2 {
+            let ((kx, ky), by) = (sides(pass), blocks.as_ref().map(|b| &b[pass]));
+            for (x, k, vs, es) in plan[pass].drain(..) {
+                let (t, d) = (kx.t[x], kx.d[x]);
+                // A block kept for the count's best is tried again when the best has since
+                // fallen by more than a sixty-fourth (only the work depends on it).
+                let now = best.u2();
+                let fallen = now * (1.0 + 1.0 / 64.0) < u2;
+                if fallen && by.is_some_and(|by| by.fine.beyond(k, own(pass, x), (t, d), lens, now))
+                {
+                    continue;
+                }
+                tried += best.span(pass, x, (vs, es), |item, u2| ky.far(item, (t, d), lens, u2));
+            }
+        }
+        return Some((best.best.winner(p, q), tried));
     }
     for pass in 0..2 {
         let ((kx, ky), by) = (sides(pass), blocks.as_ref().map(|b| &b[pass]));
@@ -1070,9 +1098,9 @@ pub(crate) fn scan_windowed<K: Kernel, C: Points + ?Sized>(
                 }
                 continue;
             };
-            by.survivors(&span, (t, d), lens, u2, &mut kept);
-            for part in kept.drain(..) {
-                tried += best.span(pass, x, part, |item, u2| ky.far(item, (t, d), lens, u2));
+            by.survivors(&span, (own(pass, x), (t, d)), lens, u2, &mut kept);
+            for (_, vs, es) in kept.drain(..) {
+                tried += best.span(pass, x, (vs, es), |item, u2| ky.far(item, (t, d), lens, u2));
             }
             if tried > budget {
                 return None;
@@ -1081,6 +1109,10 @@ pub(crate) fn scan_windowed<K: Kernel, C: Points + ?Sized>(
     }
     Some((best.best.winner(p, q), tried))
 }
+
+/// A part of [`scan_windowed`]'s count: vertex `x` of the pass's own chain, the fine block `k` of
+/// the other chain (`usize::MAX` without blocks) and that block's vertices and edges in `x`'s window.
+type Planned = (usize, usize, Range<usize>, Range<usize>);
 
 /// The best candidate so far of a scan ([`scan`], [`scan_windowed`]), with its exact distance and
 /// its bounds.
@@ -1219,34 +1251,48 @@ fn hull(a: f64, b: f64) -> (f64, f64) {
 /// The boxes of keys of a chain's blocks of `size` vertices: block `k` holds the vertices
 /// `k·size ..= min((k + 1)·size, n − 1)` and so the edges `k·size .. min((k + 1)·size, n − 1)`
 /// between them; its box is the least and greatest `t̂` and `d̂` of those vertices.
+///
+/// Each block also has a box in its own chord's frame ([`Chord`]), tried when the line's box
+/// fails: it holds the block's vertices and the ends of its edges (for an envelope, the whole
+/// carrying edges).
 struct Boxes {
     t: Vec<(f64, f64)>,
     d: Vec<(f64, f64)>,
+    chords: Vec<Option<Chord>>,
 }
 
 impl Boxes {
-    fn of(k: Keys<'_>, size: usize) -> Boxes {
+    fn of<C: Points + ?Sized>(c: &C, k: Keys<'_>, size: usize) -> Boxes {
         let n = k.t.len();
         let count = n.div_ceil(size);
         let (mut t, mut d) = (Vec::with_capacity(count), Vec::with_capacity(count));
+        let mut chords = Vec::with_capacity(count);
         for b in 0..count {
-            let ends = b * size..=((b + 1) * size).min(n - 1);
-            let (t0, d0) = (k.t[b * size], k.d[b * size]);
+            let (first, last) = (b * size, ((b + 1) * size).min(n - 1));
+            let (t0, d0) = (k.t[first], k.d[first]);
             let (mut bt, mut bd) = ((t0, t0), (d0, d0));
-            for (&x, &y) in k.t[ends.clone()].iter().zip(&k.d[ends]) {
+            for (&x, &y) in k.t[first..=last].iter().zip(&k.d[first..=last]) {
                 bt = (bt.0.min(x), bt.1.max(x));
                 bd = (bd.0.min(y), bd.1.max(y));
             }
             t.push(bt);
             d.push(bd);
+            let ends = (first..last).flat_map(|e| {
+                let (a, b) = c.seg(e);
+                [a, b]
+            });
+            let points = (first..=last).map(|i| c.at(i)).chain(ends);
+            chords.push(Chord::of(c.at(first), c.at(last), points));
         }
-        Boxes { t, d }
+        Boxes { t, d, chords }
     }
 
     /// Whether every vertex and edge of block `k` is certainly farther than `√u2` from the vertex
-    /// with keys `(t, d)`.
-    fn beyond(&self, k: usize, (t, d): (f64, f64), lens: &Lens, u2: f64) -> bool {
+    /// `x` with keys `(t, d)`: by the line's box, then by the chord's.
+    #[inline]
+    fn beyond(&self, k: usize, x: DVec2, (t, d): (f64, f64), lens: &Lens, u2: f64) -> bool {
         lens.apart((t, d), self.t[k], self.d[k], u2)
+            || self.chords[k].is_some_and(|c| c.apart(x, u2))
     }
 }
 
@@ -1257,10 +1303,10 @@ struct Blocks {
 }
 
 impl Blocks {
-    fn of(k: Keys<'_>) -> Blocks {
+    fn of<C: Points + ?Sized>(c: &C, k: Keys<'_>) -> Blocks {
         Blocks {
-            fine: Boxes::of(k, BLOCK),
-            coarse: Boxes::of(k, BLOCK * GROUP),
+            fine: Boxes::of(c, k, BLOCK),
+            coarse: Boxes::of(c, k, BLOCK * GROUP),
         }
     }
 
@@ -1272,20 +1318,21 @@ impl Blocks {
     fn survivors(
         &self,
         span: &Span,
-        x: (f64, f64),
+        (v, x): (DVec2, (f64, f64)),
         lens: &Lens,
         u2: f64,
-        out: &mut Vec<(Range<usize>, Range<usize>)>,
+        out: &mut Vec<(usize, Range<usize>, Range<usize>)>,
     ) {
         let fine = span.blocks(BLOCK);
         for c in span.blocks(BLOCK * GROUP) {
             let inner = (c * GROUP).max(fine.start)..((c + 1) * GROUP).min(fine.end);
-            if inner.len() > 2 && self.coarse.beyond(c, x, lens, u2) {
+            if inner.len() > 2 && self.coarse.beyond(c, v, x, lens, u2) {
                 continue;
             }
             for k in inner {
-                if !self.fine.beyond(k, x, lens, u2) {
-                    out.push(span.within(k));
+                if !self.fine.beyond(k, v, x, lens, u2) {
+                    let (vs, es) = span.within(k);
+                    out.push((k, vs, es));
                 }
             }
         }

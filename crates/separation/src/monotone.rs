@@ -328,6 +328,85 @@ impl Lens {
     }
 }
 
+/// A box of keys in a frame of its own (our addition to the sweep, `docs/algorithms/
+/// separation-polygons.md`, "Chord frames"): for a block of consecutive vertices and edges of a
+/// chain, the keys `s(v) = (v − o)·c` and `n(v) = (v − o)×c` of the points that bound it, in the
+/// frame of its first vertex `o` and its chord `c` (to its last vertex). The line's frame boxes a
+/// block tilted against the line loosely (by about its extent times the sine of the tilt); the
+/// chord's frame follows the block, so a point beside a zigzag or an arc sees the block's near
+/// side.
+///
+/// Why it bounds distances. `o` and `c` are stored `f64` values, so they are exact inputs: every
+/// point `y` of the block's vertices and edges lies in the exact box of its bounding points (the
+/// keys are affine), and for any point `x`, `|x − y|²·|c|² = Δs² + Δn²` (Lagrange's identity). The
+/// computed keys `fl(fl(v − o)·c)` and `fl(fl(v − o)×c)` are within `4.01u·(|p̂ₓ| + |p̂ᵧ|)` of the
+/// exact ones (as for [`keys`], with one rounding fewer), so [`Lens`]'s gap and threshold tests
+/// hold with `E = 8u·max fl(|p̂ₓ| + |p̂ᵧ|) + 2⁻¹⁰⁰⁰`, the maximum taken over the bounding points
+/// and the point tested, and `|c|²` in place of `|b − a|²`.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Chord {
+    o: DVec2,
+    c: DVec2,
+    s: (f64, f64),
+    n: (f64, f64),
+    worst: f64,
+    len2: f64,
+}
+
+impl Chord {
+    /// The computed keys of `v` in the frame, and the magnitude their error bound grows with.
+    #[inline]
+    fn key(o: DVec2, c: DVec2, v: DVec2) -> (f64, f64, f64) {
+        let d = v - o;
+        let (x, y) = (d.x * c.x, d.y * c.y);
+        let (p, q) = (d.x * c.y, d.y * c.x);
+        (x + y, p - q, (x.abs() + y.abs()).max(p.abs() + q.abs()))
+    }
+
+    /// The frame from `first` along the chord to `last`, boxing `points` (which must hold every
+    /// vertex and the ends of every edge of the block). `None` when a key or `|c|²` is not finite.
+    pub(crate) fn of(
+        first: DVec2,
+        last: DVec2,
+        points: impl IntoIterator<Item = DVec2>,
+    ) -> Option<Chord> {
+        let c = last - first;
+        let (mut s, mut n, mut worst) = ((0.0f64, 0.0f64), (0.0f64, 0.0f64), 0.0f64);
+        for v in points {
+            let (a, b, w) = Chord::key(first, c, v);
+            s = (s.0.min(a), s.1.max(a));
+            n = (n.0.min(b), n.1.max(b));
+            worst = worst.max(w);
+        }
+        let len2 = c.x * c.x + c.y * c.y;
+        let finite = [s.0, s.1, n.0, n.1, worst, len2]
+            .iter()
+            .all(|x| x.is_finite());
+        finite.then_some(Chord {
+            o: first,
+            c,
+            s,
+            n,
+            worst,
+            len2,
+        })
+    }
+
+    /// Whether every point of the block is certainly farther than `√u2` from `x` ([`Lens::apart`]
+    /// in the chord's frame). Never when `|c| = 0` or a key of `x` is not finite.
+    #[inline]
+    pub(crate) fn apart(&self, x: DVec2, u2: f64) -> bool {
+        let (s, n, w) = Chord::key(self.o, self.c, x);
+        let lens = Lens {
+            len: 0.0,
+            len2: self.len2,
+            slack: EIGHT_U * self.worst.max(w) + TINY,
+        };
+        // A NaN key or slack makes every comparison false: never apart.
+        lens.apart((s, n), self.s, self.n, u2)
+    }
+}
+
 /// `2⁻⁴⁰`: the relative widening of the window, far above the few roundings of its computation.
 const WIDEN: f64 = 1.0 / 1_099_511_627_776.0;
 /// `2⁻¹⁰⁰⁰`, above any absolute error from underflow in the keys.
@@ -788,5 +867,94 @@ mod tests {
         }
         assert!(skipped > 15_000 && kept > 15_000, "{skipped} {kept}");
         assert!(beyond > 20_000 && near > 20_000, "{beyond} {near}");
+    }
+
+    /// A block that [`Chord::apart`] puts farther than `√u2` from a point is: every vertex and
+    /// every edge of it (exact squared distances), for blocks of every scale class, zigzags, long
+    /// nearly straight blocks a hair from the point (cancelling keys), clusters within `10⁻⁷` of
+    /// the point, chords of length zero, and thresholds around the exact nearest distance.
+    #[test]
+    fn chord_boxes_hold_their_bounds() {
+        use num_traits::ToPrimitive;
+        use polydist_predicates::exact::{
+            squared_distance_point_point, squared_distance_point_segment,
+        };
+        let mut rng = SplitMix64::new(0xc40d);
+        let r = |x: f64| to_rational(x).expect("finite");
+        let (mut apart, mut near) = (0, 0);
+        let next = |x: f64, up: bool| {
+            let bits = x.to_bits();
+            f64::from_bits(if up { bits + 1 } else { bits.saturating_sub(1) })
+        };
+        for round in 0..3_000 {
+            let class = round % 6;
+            let mut x = point(&mut rng, class);
+            let n = 2 + round % 8;
+            let block: Vec<DVec2> = match round % 5 {
+                // A long, nearly straight block with `x` a hair from its middle: the keys cancel
+                // (their errors are then a large share of the gap across the chord).
+                4 => {
+                    let (o, e) = (point(&mut rng, class), point(&mut rng, class) - x);
+                    let side = DVec2::new(-e.y, e.x);
+                    x = o + e * 0.5 + side * (1e-12 * (rng.unit_f64() + 0.5));
+                    (0..n)
+                        .map(|k| {
+                            let jitter = 1e-13 * (rng.unit_f64() - 0.5);
+                            o + e * (k as f64 / (n - 1) as f64) + side * jitter
+                        })
+                        .collect()
+                }
+                // Random points of the class.
+                0 => (0..n).map(|_| point(&mut rng, class)).collect(),
+                // A cluster next to `x`, far from the origin compared with its size.
+                1 => {
+                    let s = 1e-7 * (x.x.abs() + x.y.abs()).max(1e-300);
+                    (0..n)
+                        .map(|_| x + DVec2::new(rng.unit_f64() - 0.5, rng.unit_f64() - 0.5) * s)
+                        .collect()
+                }
+                // A zigzag along a random direction, one unit from `x`'s scale.
+                2 => {
+                    let (o, e) = (point(&mut rng, class), point(&mut rng, class) - x);
+                    let side = DVec2::new(-e.y, e.x) * 0.25;
+                    (0..n)
+                        .map(|k| o + e * (k as f64 / n as f64) + side * (k % 2) as f64)
+                        .collect()
+                }
+                // A closed block (first and last vertex equal: a chord of length zero).
+                _ => {
+                    let mut b: Vec<DVec2> = (0..n).map(|_| point(&mut rng, class)).collect();
+                    b.push(b[0]);
+                    b
+                }
+            };
+            let (first, last) = (block[0], block[block.len() - 1]);
+            let chord = Chord::of(first, last, block.iter().copied()).expect("finite keys");
+            let nearest = block
+                .iter()
+                .map(|&y| squared_distance_point_point(x, y).expect("finite"))
+                .chain(
+                    block
+                        .windows(2)
+                        .map(|w| squared_distance_point_segment(x, w[0], w[1]).expect("finite")),
+                )
+                .min()
+                .expect("a vertex");
+            let at = nearest.to_f64().expect("finite");
+            let around = [next(at, false), at, next(at, true)];
+            for u2 in [0.0, 0.25, 0.5, 0.9, 0.999_999, 1.0 - 1e-12]
+                .map(|f| at * f)
+                .into_iter()
+                .chain(around)
+            {
+                if chord.apart(x, u2) {
+                    apart += 1;
+                    assert!(nearest > r(u2), "{x:?} {block:?} {u2}");
+                } else {
+                    near += 1;
+                }
+            }
+        }
+        assert!(apart > 3_000 && near > 8_000, "{apart} {near}");
     }
 }
