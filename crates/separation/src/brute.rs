@@ -2,6 +2,7 @@
 //! candidate scans the separator runs on its small subproblems ([`scan`] and [`scan_pruned`] with
 //! `interior_only`), which add an exact pre-filter ([`bounds`]) to the same answer.
 
+use core::cell::OnceCell;
 use core::cmp::Ordering;
 use core::ops::Range;
 
@@ -204,6 +205,9 @@ impl Cand {
 
 /// A chain as the scans read it: vertex `i`, and edge `e` as the segment it stands for.
 pub(crate) trait Points {
+    /// Whether edge `e` is always the segment between vertices `e` and `e + 1` (a chain), so that
+    /// the vertices alone bound a block's edges.
+    const JOINS_VERTICES: bool;
     /// The number of vertices.
     fn count(&self) -> usize;
     /// Vertex `i`.
@@ -214,6 +218,7 @@ pub(crate) trait Points {
 
 /// A polygonal chain: edge `e` joins vertices `e` and `e + 1`.
 impl Points for [DVec2] {
+    const JOINS_VERTICES: bool = true;
     #[inline]
     fn count(&self) -> usize {
         self.len()
@@ -247,6 +252,7 @@ pub(crate) struct Carried<'a> {
 }
 
 impl Points for Carried<'_> {
+    const JOINS_VERTICES: bool = false;
     #[inline]
     fn count(&self) -> usize {
         self.v.len()
@@ -1255,18 +1261,20 @@ fn hull(a: f64, b: f64) -> (f64, f64) {
 /// Each block also has a box in its own chord's frame ([`Chord`]), tried when the line's box
 /// fails: it holds the block's vertices and the ends of its edges (for an envelope, the whole
 /// carrying edges).
-struct Boxes {
+struct Boxes<'a, C: ?Sized> {
+    c: &'a C,
+    size: usize,
     t: Vec<(f64, f64)>,
     d: Vec<(f64, f64)>,
-    chords: Vec<Option<Chord>>,
+    /// Built when first needed: most blocks never get past the line's box.
+    chords: Vec<OnceCell<Option<Chord>>>,
 }
 
-impl Boxes {
-    fn of<C: Points + ?Sized>(c: &C, k: Keys<'_>, size: usize) -> Boxes {
+impl<'a, C: Points + ?Sized> Boxes<'a, C> {
+    fn of(c: &'a C, k: Keys<'_>, size: usize) -> Self {
         let n = k.t.len();
         let count = n.div_ceil(size);
         let (mut t, mut d) = (Vec::with_capacity(count), Vec::with_capacity(count));
-        let mut chords = Vec::with_capacity(count);
         for b in 0..count {
             let (first, last) = (b * size, ((b + 1) * size).min(n - 1));
             let (t0, d0) = (k.t[first], k.d[first]);
@@ -1277,14 +1285,32 @@ impl Boxes {
             }
             t.push(bt);
             d.push(bd);
+        }
+        let chords = (0..count).map(|_| OnceCell::new()).collect();
+        Boxes {
+            c,
+            size,
+            t,
+            d,
+            chords,
+        }
+    }
+
+    /// Block `k`'s box in its chord's frame: its vertices, and the ends of its edges unless the
+    /// vertices are those ends.
+    fn chord(&self, k: usize) -> Option<Chord> {
+        let (c, n) = (self.c, self.c.count());
+        let (first, last) = (k * self.size, ((k + 1) * self.size).min(n - 1));
+        let vertices = (first..=last).map(|i| c.at(i));
+        if C::JOINS_VERTICES {
+            Chord::of(c.at(first), c.at(last), vertices)
+        } else {
             let ends = (first..last).flat_map(|e| {
                 let (a, b) = c.seg(e);
                 [a, b]
             });
-            let points = (first..=last).map(|i| c.at(i)).chain(ends);
-            chords.push(Chord::of(c.at(first), c.at(last), points));
+            Chord::of(c.at(first), c.at(last), vertices.chain(ends))
         }
-        Boxes { t, d, chords }
     }
 
     /// Whether every vertex and edge of block `k` is certainly farther than `√u2` from the vertex
@@ -1292,18 +1318,20 @@ impl Boxes {
     #[inline]
     fn beyond(&self, k: usize, x: DVec2, (t, d): (f64, f64), lens: &Lens, u2: f64) -> bool {
         lens.apart((t, d), self.t[k], self.d[k], u2)
-            || self.chords[k].is_some_and(|c| c.apart(x, u2))
+            || self.chords[k]
+                .get_or_init(|| self.chord(k))
+                .is_some_and(|c| c.apart(x, u2))
     }
 }
 
 /// A chain's fine blocks ([`BLOCK`] vertices) and coarse blocks ([`GROUP`] fine ones).
-struct Blocks {
-    fine: Boxes,
-    coarse: Boxes,
+struct Blocks<'a, C: ?Sized> {
+    fine: Boxes<'a, C>,
+    coarse: Boxes<'a, C>,
 }
 
-impl Blocks {
-    fn of<C: Points + ?Sized>(c: &C, k: Keys<'_>) -> Blocks {
+impl<'a, C: Points + ?Sized> Blocks<'a, C> {
+    fn of(c: &'a C, k: Keys<'_>) -> Self {
         Blocks {
             fine: Boxes::of(c, k, BLOCK),
             coarse: Boxes::of(c, k, BLOCK * GROUP),
