@@ -857,13 +857,17 @@ pub(crate) fn meets<K: Kernel>(r: &Region, s: &Seg, t: &Seg) -> bool {
     }
 }
 
-/// A built separator: the region, the extended runs, and the kept ones.
+/// A built separator: the region and the kept extended runs.
 #[derive(Clone, Debug)]
 pub(crate) struct Built {
     pub(crate) region: Region,
-    /// Every extended run `ℓ_j`.
+    /// Every extended run `ℓ_j` (the property checker's; the construction builds the arms of the
+    /// runs step 5 tests only).
+    #[cfg(test)]
     pub(crate) runs: Vec<Seg>,
-    /// Indices into `runs` of the kept segments `l_0 … l_{m−1}`.
+    /// The kept segments `l_0 … l_{m−1}`.
+    pub(crate) segs: Vec<Seg>,
+    /// Their indices `j` among the runs.
     pub(crate) kept: Vec<usize>,
     /// Subchains: `P′` positions `[lo, hi]` and `Q′` ring positions `[lo, hi]` per kept segment.
     pub(crate) sub: Vec<((usize, usize), (usize, usize))>,
@@ -951,66 +955,137 @@ pub(crate) fn build_with_hulls<K: Kernel>(
 }
 
 /// Step 4: the runs of the geodesic `path` with their arms (each run prolonged beyond its ends to
-/// the first boundary point). The arms are walked in the triangulation while the walks stay within
-/// `budget` triangle steps in all (`8n + 64`: the common case, short arms, `O(n)`); past it, or as
-/// soon as the steps of the first [`EXTRAPOLATE_AFTER`] or more arms, extrapolated to all of them,
-/// exceed it, the remaining arms are read from the extensions of the two shortest-path trees from
-/// `path`'s ends ([`extensions`], `O(n)`), whose edges the runs are. So step 4 costs `O(n)` in all
-/// (the paper's bound), where the walks alone cost `Θ(n²)` in the worst case. Both give the same
-/// hits (tested).
-fn runs_with_arms<K: Kernel>(
-    tri: &Triangulation,
-    ring: &[DVec2],
-    path: &[usize],
-    mut budget: usize,
-    mut resolve: impl FnMut(usize, usize, Hit) -> Option<End>,
-    index: impl Fn(usize) -> usize,
-) -> Option<Vec<Seg>> {
-    let k = path.len() - 1;
-    // The trees from the path's start (forward arms) and end (backward arms), built on demand.
-    let mut trees: [Option<Extensions>; 2] = [None, None];
-    // Once the arms walked so far, extrapolated to all `2k − 2` arms, would exceed the budget, the
-    // walks stop early: the trees will be built anyway, and the steps left would be spent for
-    // nothing (long corridors: every arm runs far).
-    let (total, arms) = (budget, 2 * k.saturating_sub(1));
-    let mut walked = 0usize;
-    let mut arm = |from: usize, through: usize, forward: bool| {
-        if walked >= EXTRAPOLATE_AFTER
-            && (total - budget).saturating_mul(arms) > total.saturating_mul(walked)
-        {
-            budget = 0;
+/// the first boundary point), each built when step 5 first asks for it ([`Arms::seg`]), so that
+/// only the runs the greedy pruning tests get arms. An arm is walked in the triangulation while
+/// the walks stay within `budget` triangle steps in all (`8n + 64`: the common case, short arms,
+/// `O(n)`); past it, or as soon as the steps of the first [`EXTRAPOLATE_AFTER`] or more arms,
+/// extrapolated from the runs up to the farthest one asked for to all of them, exceed it, the remaining arms are
+/// read from the extensions of the two shortest-path trees from `path`'s ends ([`extensions`],
+/// `O(n)`), whose edges the runs are. So step 4 costs `O(n)` in all (the paper's bound), where the
+/// walks alone cost `Θ(n²)` in the worst case. Both give the same hits (tested).
+struct Arms<'a, R, I> {
+    tri: &'a Triangulation,
+    ring: &'a [DVec2],
+    path: &'a [usize],
+    /// The walks' budget left, and the one they started with.
+    budget: usize,
+    total: usize,
+    /// Arms walked so far.
+    walked: usize,
+    /// The trees from the path's start (forward arms) and end (backward arms), built on demand.
+    trees: [Option<Extensions>; 2],
+    resolve: R,
+    index: I,
+    /// The runs built so far, by index.
+    memo: Vec<Option<Seg>>,
+    /// The farthest run asked for, plus one.
+    reach: usize,
+}
+
+impl<'a, R, I> Arms<'a, R, I>
+where
+    R: FnMut(usize, usize, Hit) -> Option<End>,
+    I: Fn(usize) -> usize,
+{
+    fn new(
+        tri: &'a Triangulation,
+        ring: &'a [DVec2],
+        path: &'a [usize],
+        budget: usize,
+        resolve: R,
+        index: I,
+    ) -> Self {
+        Arms {
+            tri,
+            ring,
+            path,
+            budget,
+            total: budget,
+            walked: 0,
+            trees: [None, None],
+            resolve,
+            index,
+            memo: vec![None; path.len().saturating_sub(1)],
+            reach: 0,
         }
-        walked += 1;
-        let hit = first_hit_within::<K>(tri, ring, from, through, &mut budget).or_else(|| {
+    }
+
+    /// The arm of the run from `path` vertex `from` through `through`, beyond `through`.
+    fn arm<K: Kernel>(&mut self, from: usize, through: usize, forward: bool) -> Option<End> {
+        // Once the steps walked so far, extrapolated from the runs up to the farthest one asked
+        // for to all `k` runs (step 5 reads the path to its end), would exceed the budget, the
+        // walks stop early: the trees will be built anyway, and the steps left would be spent for
+        // nothing (long corridors: every arm runs far).
+        let k = self.memo.len();
+        if self.walked >= EXTRAPOLATE_AFTER
+            && (self.total - self.budget).saturating_mul(k) > self.total.saturating_mul(self.reach)
+        {
+            self.budget = 0;
+        }
+        self.walked += 1;
+        let (tri, ring, path) = (self.tri, self.ring, self.path);
+        // Once the budget is spent the walk is not even started (its first step turns around
+        // `through`, `O(degree)`).
+        let walked = (self.budget > 0)
+            .then(|| first_hit_within::<K>(tri, ring, from, through, &mut self.budget))
+            .flatten();
+        let hit = walked.or_else(|| {
+            let k = path.len() - 1;
             let (slot, s) = if forward { (0, path[0]) } else { (1, path[k]) };
-            let tree = trees[slot].get_or_insert_with(|| extensions::<K>(tri, ring, s));
+            let tree = self.trees[slot].get_or_insert_with(|| extensions::<K>(tri, ring, s));
             tree.hit[through]
         });
-        resolve(from, through, hit.unwrap_or(Hit::Immediate))
-    };
-    let mut runs = Vec::with_capacity(k);
-    for j in 0..k {
+        (self.resolve)(from, through, hit.unwrap_or(Hit::Immediate))
+    }
+
+    /// Run `j` with its arms, built on first use.
+    fn seg_with<K: Kernel>(&mut self, j: usize) -> Option<Seg> {
+        if let Some(s) = self.memo.get(j).copied().flatten() {
+            return Some(s);
+        }
+        let (path, k) = (self.path, self.memo.len());
+        if j >= k {
+            return None;
+        }
+        self.reach = self.reach.max(j + 1);
         let bottom = if j == 0 {
             End::Run
         } else {
-            arm(path[j + 1], path[j], false)?
+            self.arm::<K>(path[j + 1], path[j], false)?
         };
         let top = if j + 1 == k {
             End::Run
         } else {
-            arm(path[j], path[j + 1], true)?
+            self.arm::<K>(path[j], path[j + 1], true)?
         };
-        runs.push(Seg {
-            lo: index(path[j]),
-            hi: index(path[j + 1]),
+        let s = Seg {
+            lo: (self.index)(path[j]),
+            hi: (self.index)(path[j + 1]),
             bottom,
             top,
-        });
+        };
+        self.memo[j] = Some(s);
+        Some(s)
     }
-    Some(runs)
 }
 
-/// Arms walked before [`runs_with_arms`] extrapolates their steps to all the arms.
+/// Every run of `path` with its arms ([`Arms`], all of them asked for in order): the tests' list.
+#[cfg(test)]
+fn runs_with_arms<K: Kernel>(
+    tri: &Triangulation,
+    ring: &[DVec2],
+    path: &[usize],
+    budget: usize,
+    resolve: impl FnMut(usize, usize, Hit) -> Option<End>,
+    index: impl Fn(usize) -> usize,
+) -> Option<Vec<Seg>> {
+    let mut arms = Arms::new(tri, ring, path, budget, resolve, index);
+    (0..arms.memo.len())
+        .map(|j| arms.seg_with::<K>(j))
+        .collect()
+}
+
+/// Arms walked before [`Arms`] extrapolates their steps to all the runs.
 const EXTRAPOLATE_AFTER: usize = 16;
 
 /// A hit as an end on the ring walked (no pruned pockets).
@@ -1048,9 +1123,9 @@ pub(crate) fn build_region<K: Kernel>(
 ) -> Result<Built, SeparationError> {
     let (tri, path) = geodesic_of::<K>(&region, cache)?;
     let budget = 8 * region.ring.len() + 64;
-    let runs = runs_with_arms::<K>(&tri, &region.ring, &path, budget, plain, |i| i)
-        .ok_or(SeparationError::Inconsistent)?;
-    Ok(finish::<K>(region, runs))
+    let arms = Arms::new(&tri, &region.ring, &path, budget, plain, |i| i);
+    let sel = select::<K, _, _>(&region, arms).ok_or(SeparationError::Inconsistent)?;
+    Ok(finish(region, sel))
 }
 
 /// [`build_region`] with the unentered pockets of the walls cut off before triangulating
@@ -1067,56 +1142,117 @@ fn build_region_pruned<K: Kernel>(
     let Some(pruned) = crate::pockets::prune::<K>(&region, p, q) else {
         return build_region::<K>(region, cache);
     };
-    match pruned_runs::<K>(&pruned, cache) {
-        Some(runs) => Ok(finish::<K>(region, runs)),
+    match pruned_selection::<K>(&region, &pruned, cache) {
+        Some(sel) => Ok(finish(region, sel)),
         None => build_region::<K>(region, cache),
     }
 }
 
-/// Steps 3–4 on the reduced region, the runs and their ends read on the full ring; `None` when the
-/// reduced region fails or the pocket walks exceed their budget (`8N + 64` steps, `N` the full
-/// ring's size).
-fn pruned_runs<K: Kernel>(pruned: &Pruned<'_>, cache: &mut Halves) -> Option<Vec<Seg>> {
+/// Steps 3–5 on the reduced region, the runs and their ends read on the full ring (`region`);
+/// `None` when the reduced region fails or the pocket walks exceed their budget (`8N + 64` steps,
+/// `N` the full ring's size).
+fn pruned_selection<K: Kernel>(
+    region: &Region,
+    pruned: &Pruned<'_>,
+    cache: &mut Halves,
+) -> Option<Selection> {
     let (tri, path) = geodesic_of::<K>(&pruned.region, cache).ok()?;
     let ring = &pruned.region.ring;
     let mut pocket_budget = 8 * pruned.full_len() + 64;
-    runs_with_arms::<K>(
+    let arms = Arms::new(
         &tri,
         ring,
         &path,
         8 * ring.len() + 64,
         |from, through, hit| pruned.resolve::<K>(from, through, hit, &mut pocket_budget),
         |i| pruned.keep[i],
-    )
+    );
+    select::<K, _, _>(region, arms)
 }
 
-/// Steps 5–6: the kept runs, the cuts and the subchains.
-fn finish<K: Kernel>(region: Region, runs: Vec<Seg>) -> Built {
-    let k = runs.len();
-    // Step 5: greedy pruning; the scan from the last kept stops at the first run that misses it.
-    let mut kept = vec![0];
+/// Step 5's choice: the kept runs' indices and the runs themselves (and, in the tests, every run,
+/// for the property checker).
+pub(crate) struct Selection {
+    kept: Vec<usize>,
+    segs: Vec<Seg>,
+    #[cfg(test)]
+    runs: Vec<Seg>,
+}
+
+/// Step 5, greedy pruning: keep `ℓ_0`; from the last kept `ℓ_a`, keep the largest `j` with
+/// `ℓ_j ∩ ℓ_a ≠ ∅`. The runs meeting `ℓ_a` form an interval after it (`ℓ_{a+1}` always meets it:
+/// they share `v_{a+1}`; that the rest is an interval is the notes' belief, asserted on every case
+/// by the checker), so its end is found by a galloping search — offsets 1, 2, 4, … from `a + 1`
+/// until a miss, then bisection — in `O(log(j − a))` meeting tests, where the forward scan up to
+/// the first miss took `j − a`: `O(m log(k/m))` tests and arms for `m` kept of `k` runs instead
+/// of `O(k)` (the same `j` as the scan whenever the belief holds; where it would not, both keep
+/// a run that meets `ℓ_a` followed by one that misses it). `None` when an arm fails.
+fn select<K, R, I>(region: &Region, mut src: Arms<'_, R, I>) -> Option<Selection>
+where
+    K: Kernel,
+    R: FnMut(usize, usize, Hit) -> Option<End>,
+    I: Fn(usize) -> usize,
+{
+    let k = src.memo.len();
+    let first = src.seg_with::<K>(0)?;
+    let (mut kept, mut segs) = (vec![0], vec![first]);
     let mut a = 0;
     while a + 1 < k {
-        let mut j = a + 1;
-        while j + 1 < k && meets::<K>(&region, &runs[a], &runs[j + 1]) {
-            j += 1;
+        let la = segs[segs.len() - 1];
+        let mut meets_a =
+            |x: usize| -> Option<bool> { Some(meets::<K>(region, &la, &src.seg_with::<K>(x)?)) };
+        let (mut lo, mut hi, mut step) = (a + 1, k, 1);
+        while lo + step < k {
+            if meets_a(lo + step)? {
+                lo += step;
+                step *= 2;
+            } else {
+                hi = lo + step;
+                break;
+            }
         }
-        kept.push(j);
-        a = j;
+        while hi - lo > 1 {
+            let mid = lo + (hi - lo) / 2;
+            if meets_a(mid)? {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        kept.push(lo);
+        segs.push(src.seg_with::<K>(lo)?);
+        a = lo;
     }
+    Some(Selection {
+        #[cfg(test)]
+        runs: (0..k)
+            .map(|j| src.seg_with::<K>(j))
+            .collect::<Option<Vec<_>>>()?,
+        kept,
+        segs,
+    })
+}
+
+/// Step 6: the cuts and the subchains of the kept runs.
+fn finish(region: Region, sel: Selection) -> Built {
+    let Selection {
+        kept,
+        segs,
+        #[cfg(test)]
+        runs,
+    } = sel;
     // Step 6: cuts p⁺(i), q⁺(i) as (low, high) covers, then report 001's subchains.
     let m = kept.len();
     let top_p = region.top_p();
     let mut cut_fallbacks = 0;
     let mut pc = Vec::with_capacity(m);
     let mut qc = Vec::with_capacity(m);
-    for (i, &j) in kept.iter().enumerate() {
+    for (i, s) in segs.iter().enumerate() {
         if i + 1 == m {
             pc.push((top_p, top_p));
             qc.push((region.qt, region.qt));
             continue;
         }
-        let s = &runs[j];
         let cp = highest([
             cover_p(&region, s.top, s.hi),
             cover_p(&region, End::Run, s.hi),
@@ -1153,8 +1289,7 @@ fn finish<K: Kernel>(region: Region, runs: Vec<Seg>) -> Built {
         }
     };
     let mut sub = Vec::with_capacity(m);
-    for (i, &j) in kept.iter().enumerate() {
-        let s = &runs[j];
+    for (i, s) in segs.iter().enumerate() {
         let ii = i as isize;
         let last = i + 1 == m;
         let top_on_p = cover_p(&region, s.top, s.hi).is_some();
@@ -1187,7 +1322,9 @@ fn finish<K: Kernel>(region: Region, runs: Vec<Seg>) -> Built {
     }
     Built {
         region,
+        #[cfg(test)]
         runs,
+        segs,
         kept,
         sub,
         cuts: pc.iter().copied().zip(qc.iter().copied()).collect(),
@@ -1344,7 +1481,7 @@ fn solve_pass<K: Kernel>(
             Some(g) if qlo_all <= g && g < qhi_all => [(qlo_all, g), (g + 1, qhi_all)],
             _ => [(qlo_all, qhi_all), (1, 0)],
         };
-        let s = &b.runs[b.kept[i]];
+        let s = &b.segs[i];
         let (a, c) = (r.ring[s.lo], r.ring[s.hi]);
         // Built for the scans that need it only (most subproblems are small).
         let near = || near_of(r, s);
@@ -2229,7 +2366,7 @@ mod tests {
                     Some(g) if qlo <= g && g < qhi => [(qlo, g), (g + 1, qhi)],
                     _ => [(qlo, qhi), (1, 0)],
                 };
-                let near = near_of(r, &b.runs[b.kept[i]]);
+                let near = near_of(r, &b.segs[i]);
                 let pc: Vec<DVec2> = (plo..=phi).map(|k| vp[(r.pb + k) % r.np]).collect();
                 for (qlo, qhi) in parts.into_iter().filter(|(lo, hi)| lo <= hi) {
                     let qc: Vec<DVec2> = (qlo..=qhi).map(|k| r.ring[k]).collect();
@@ -2259,7 +2396,7 @@ mod tests {
         let r = &b.region;
         let (vp, vq) = (p.vertices(), q.vertices());
         let m = b.kept.len();
-        let segs: Vec<Seg> = b.kept.iter().map(|&j| b.runs[j]).collect();
+        let segs = &b.segs;
         for i in 0..m {
             for j in i + 1..m {
                 let meet = meets::<K>(r, &segs[i], &segs[j]);
@@ -2271,6 +2408,26 @@ mod tests {
                 }
             }
             check_iii_iv::<K>(r, &segs[i], vp, vq).map_err(|e| format!("l_{i}: {e}"))?;
+        }
+        // The galloping search keeps what the forward scan to the first miss keeps.
+        let mut scanned = vec![0];
+        let (k, mut a) = (b.runs.len(), 0);
+        while a + 1 < k {
+            let mut j = a + 1;
+            while j + 1 < k && meets::<K>(r, &b.runs[a], &b.runs[j + 1]) {
+                j += 1;
+            }
+            scanned.push(j);
+            a = j;
+        }
+        if scanned != b.kept {
+            return Err(format!(
+                "greedy: kept {:?}, the scan keeps {scanned:?}",
+                b.kept
+            ));
+        }
+        if b.kept.iter().zip(&b.segs).any(|(&j, s)| b.runs[j] != *s) {
+            return Err("kept segments are not their runs".into());
         }
         // Step C's interval belief: the runs meeting a kept run form an interval after it.
         for w in b.kept.windows(2) {
@@ -3560,13 +3717,15 @@ mod tests {
                 continue;
             };
             let full = runs_with_arms::<K>(&tri, &r.ring, &path, usize::MAX, plain, |i| i).unwrap();
-            let runs = pruned_runs::<K>(&pruned, &mut Halves::default()).unwrap_or_else(|| {
-                panic!(
-                    "no pruned runs: P = {:?}\nQ = {:?}",
-                    p.vertices(),
-                    q.vertices()
-                )
-            });
+            let sel =
+                pruned_selection::<K>(&r, &pruned, &mut Halves::default()).unwrap_or_else(|| {
+                    panic!(
+                        "no pruned runs: P = {:?}\nQ = {:?}",
+                        p.vertices(),
+                        q.vertices()
+                    )
+                });
+            let runs = sel.runs.clone();
             assert_eq!(runs, full, "P = {:?}\nQ = {:?}", p.vertices(), q.vertices());
             let mut kept = vec![false; n];
             for &i in &pruned.keep {
@@ -3585,7 +3744,7 @@ mod tests {
             counts.containing += usize::from(r.gap.is_some());
             counts.pinched += usize::from(r.cut.is_some() && r.gap.is_none());
             counts.removed += n - pruned.keep.len();
-            let a = finish::<K>(r.clone(), runs);
+            let a = finish(r.clone(), sel);
             let b = build_region::<K>(r, &mut Halves::default()).unwrap();
             assert_eq!((&a.kept, &a.sub, &a.cuts), (&b.kept, &b.sub, &b.cuts));
         }
