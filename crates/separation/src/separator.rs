@@ -955,14 +955,21 @@ pub(crate) fn build_with_hulls<K: Kernel>(
 }
 
 /// Step 4: the runs of the geodesic `path` with their arms (each run prolonged beyond its ends to
-/// the first boundary point), each built when step 5 first asks for it ([`Arms::seg`]), so that
-/// only the runs the greedy pruning tests get arms. An arm is walked in the triangulation while
-/// the walks stay within `budget` triangle steps in all (`8n + 64`: the common case, short arms,
-/// `O(n)`); past it, or as soon as the steps of the first [`EXTRAPOLATE_AFTER`] or more arms,
-/// extrapolated from the runs up to the farthest one asked for to all of them, exceed it, the remaining arms are
-/// read from the extensions of the two shortest-path trees from `path`'s ends ([`extensions`],
-/// `O(n)`), whose edges the runs are. So step 4 costs `O(n)` in all (the paper's bound), where the
-/// walks alone cost `Θ(n²)` in the worst case. Both give the same hits (tested).
+/// the first boundary point), each built when step 5 first asks for it (`Arms::seg_with`), so
+/// that only the runs the greedy pruning tests get arms. An arm is walked in the triangulation
+/// while the walks stay within `budget` triangle steps in all (`16n + 64`); past it, or as soon as
+/// the steps of the first [`EXTRAPOLATE_AFTER`] or more arms, scaled from the part of the path
+/// step 5 has settled (an eighth at least) to the whole path, exceed twice the budget, the
+/// remaining arms are read from the extensions of the two shortest-path trees from `path`'s ends
+/// ([`extensions`], `O(n)`), whose edges the runs are. So step 4 costs `O(n)` in all (the paper's
+/// bound), where the walks alone cost `Θ(n²)` in the worst case. Both give the same hits (tested).
+///
+/// A walk step costs about 60 instructions, a tree about 700 a ring vertex. When step 5 keeps few
+/// runs it asks for few arms (the star in a pocket at 32,768 vertices: 134 arms of its 8,192 runs,
+/// some 2,000 steps each, `12.8n` steps in all), so the walks answer alone; on the spirals at
+/// 131,072 vertices, whose arms cross ever more triangles as the walls are sampled finer, the
+/// walks spend their budget and the trees are built after all. Only the work depends on the
+/// choice.
 struct Arms<'a, R, I> {
     tri: &'a Triangulation,
     ring: &'a [DVec2],
@@ -978,8 +985,8 @@ struct Arms<'a, R, I> {
     index: I,
     /// The runs built so far, by index.
     memo: Vec<Option<Seg>>,
-    /// The farthest run asked for, plus one.
-    reach: usize,
+    /// The run step 5 has settled the path up to (its last kept run).
+    progress: usize,
 }
 
 impl<'a, R, I> Arms<'a, R, I>
@@ -1006,19 +1013,23 @@ where
             resolve,
             index,
             memo: vec![None; path.len().saturating_sub(1)],
-            reach: 0,
+            progress: 0,
         }
     }
 
     /// The arm of the run from `path` vertex `from` through `through`, beyond `through`.
     fn arm<K: Kernel>(&mut self, from: usize, through: usize, forward: bool) -> Option<End> {
-        // Once the steps walked so far, extrapolated from the runs up to the farthest one asked
-        // for to all `k` runs (step 5 reads the path to its end), would exceed the budget, the
-        // walks stop early: the trees will be built anyway, and the steps left would be spent for
-        // nothing (long corridors: every arm runs far).
+        // Once step 5 has settled an eighth of the path or more, and the steps walked so far,
+        // scaled from that part to the whole path, would exceed twice the budget (the scaling
+        // overestimates: the first kept runs' searches reach far), the walks stop early:
+        // the trees will be built anyway, and the steps left would be spent for nothing (arms that
+        // cross more triangles the finer the walls are sampled: the spirals at 131,072 vertices).
+        // Only the work depends on it.
         let k = self.memo.len();
         if self.walked >= EXTRAPOLATE_AFTER
-            && (self.total - self.budget).saturating_mul(k) > self.total.saturating_mul(self.reach)
+            && self.progress.saturating_mul(8) >= k
+            && (self.total - self.budget).saturating_mul(k)
+                > self.total.saturating_mul(2 * self.progress)
         {
             self.budget = 0;
         }
@@ -1047,7 +1058,6 @@ where
         if j >= k {
             return None;
         }
-        self.reach = self.reach.max(j + 1);
         let bottom = if j == 0 {
             End::Run
         } else {
@@ -1122,7 +1132,7 @@ pub(crate) fn build_region<K: Kernel>(
     cache: &mut Halves,
 ) -> Result<Built, SeparationError> {
     let (tri, path) = geodesic_of::<K>(&region, cache)?;
-    let budget = 8 * region.ring.len() + 64;
+    let budget = 16 * region.ring.len() + 64;
     let arms = Arms::new(&tri, &region.ring, &path, budget, plain, |i| i);
     let sel = select::<K, _, _>(&region, arms).ok_or(SeparationError::Inconsistent)?;
     Ok(finish(region, sel))
@@ -1163,7 +1173,7 @@ fn pruned_selection<K: Kernel>(
         &tri,
         ring,
         &path,
-        8 * ring.len() + 64,
+        16 * ring.len() + 64,
         |from, through, hit| pruned.resolve::<K>(from, through, hit, &mut pocket_budget),
         |i| pruned.keep[i],
     );
@@ -1222,6 +1232,7 @@ where
         kept.push(lo);
         segs.push(src.seg_with::<K>(lo)?);
         a = lo;
+        src.progress = a;
     }
     Some(Selection {
         #[cfg(test)]
