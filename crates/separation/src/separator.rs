@@ -11,11 +11,12 @@
 //!    `P` from `p_b` to `p_t`, `Q′` clockwise on `Q` from `q_b` to `q_t`.
 //! 2. **Region.** `R` is bounded by the ring `p_b, Q′, p_t, P′ reversed` (counter-clockwise).
 //! 3. **Geodesic.** The shortest path `π` from `p_b` to `p_t` in `R` (triangulation, funnel).
-//! 4. **Extensions.** Each run of `π` is prolonged both ways to the first boundary point of `R`,
-//!    by a walk in the triangulation; endpoints keep their provenance (a ring vertex, or a ring
-//!    edge with the line of the run: a symbolic point, never rounded).
+//! 4. **Extensions.** Each run of `π` that step 5 asks for is prolonged both ways to the first
+//!    boundary point of `R`, by a walk in the triangulation (or the shortest-path trees' extensions
+//!    once the walks are long); endpoints keep their provenance (a ring vertex, or a ring edge with
+//!    the line of the run: a symbolic point, never rounded).
 //! 5. **Greedy pruning** (property (ii)): keep the first run; from the last kept, keep the
-//!    largest-indexed extension that still meets it.
+//!    largest-indexed extension that still meets it (found by a galloping search).
 //! 6. **Cuts and subchains** (report 001's rule, with its sentinels), read from provenance.
 //! 7. **Subproblems.** `σ(P, Q) = min σ(P_i, Q_i)`.
 //!
