@@ -978,8 +978,8 @@ impl Window {
 /// budget, the candidates of the blocks not skipped whole; when either exceeds the budget, `None`
 /// at once. When that count ran, its blocks are the ones tried (a block kept for the count's best
 /// is kept for any later, nearer best; it is tested again only once the best has fallen by more
-/// than a sixty-fourth), so the boxes are not tested twice. With a finite `cut` (the square of a distance known elsewhere), candidates bounded
-/// strictly above it are skipped and the windows are never wider than for `cut`, as in
+/// than a sixty-fourth), so the boxes are not tested twice. With a finite `cut` (the square of a
+/// distance known elsewhere), candidates bounded strictly above it are skipped and the windows are never wider than for `cut`, as in
 /// [`scan_winner_below`]: the winner is the nearest pair when that is strictly nearer than the
 /// known distance, some pair of the chains otherwise.
 ///
@@ -1059,7 +1059,7 @@ pub(crate) fn scan_windowed<K: Kernel, C: Points + ?Sized>(
             let span = Span::of(window.around(t, ky.t, w), ky.t.len());
             match by {
                 Some(by) => by.survivors(&span, (own(pass, x), (t, d)), lens, u2, &mut kept),
-                None => kept.push((usize::MAX, span.vs, span.es)),
+                None => kept.push((None, span.vs, span.es)),
             }
             for (k, vs, es) in kept.drain(..) {
                 ahead += es.len() + if pass == 0 { vs.len() } else { 0 };
@@ -1082,7 +1082,8 @@ pub(crate) fn scan_windowed<K: Kernel, C: Points + ?Sized>(
                 // fallen by more than a sixty-fourth (only the work depends on it).
                 let now = best.u2();
                 let fallen = now * (1.0 + 1.0 / 64.0) < u2;
-                if fallen && by.is_some_and(|by| by.fine.beyond(k, own(pass, x), (t, d), lens, now))
+                let fine = by.zip(k).map(|(by, k)| (&by.fine, k));
+                if fallen && fine.is_some_and(|(f, k)| f.beyond(k, own(pass, x), (t, d), lens, now))
                 {
                     continue;
                 }
@@ -1117,8 +1118,8 @@ pub(crate) fn scan_windowed<K: Kernel, C: Points + ?Sized>(
 }
 
 /// A part of [`scan_windowed`]'s count: vertex `x` of the pass's own chain, the fine block `k` of
-/// the other chain (`usize::MAX` without blocks) and that block's vertices and edges in `x`'s window.
-type Planned = (usize, usize, Range<usize>, Range<usize>);
+/// the other chain (`None` without blocks) and that block's vertices and edges in `x`'s window.
+type Planned = (usize, Option<usize>, Range<usize>, Range<usize>);
 
 /// The best candidate so far of a scan ([`scan`], [`scan_windowed`]), with its exact distance and
 /// its bounds.
@@ -1349,7 +1350,7 @@ impl<'a, C: Points + ?Sized> Blocks<'a, C> {
         (v, x): (DVec2, (f64, f64)),
         lens: &Lens,
         u2: f64,
-        out: &mut Vec<(usize, Range<usize>, Range<usize>)>,
+        out: &mut Vec<(Option<usize>, Range<usize>, Range<usize>)>,
     ) {
         let fine = span.blocks(BLOCK);
         for c in span.blocks(BLOCK * GROUP) {
@@ -1360,7 +1361,7 @@ impl<'a, C: Points + ?Sized> Blocks<'a, C> {
             for k in inner {
                 if !self.fine.beyond(k, v, x, lens, u2) {
                     let (vs, es) = span.within(k);
-                    out.push((k, vs, es));
+                    out.push((Some(k), vs, es));
                 }
             }
         }
