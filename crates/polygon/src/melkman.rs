@@ -14,8 +14,6 @@
 //! vertex, and popping collinear vertices keeps the hull strictly convex. Both loops keep at least two
 //! deque entries, so an inconsistent kernel (Fast) cannot empty the deque or index out of range.
 
-use std::collections::VecDeque;
-
 use glam::DVec2;
 use polydist_predicates::{Kernel, Orientation};
 
@@ -25,34 +23,44 @@ use crate::ring::lowest;
 /// consecutive collinear), as indices into `v`: counter-clockwise, strictly convex, starting at the
 /// lexicographically lowest and increasing cyclically.
 pub(crate) fn hull<K: Kernel>(v: &[DVec2]) -> Vec<usize> {
-    let ccw =
-        |a: usize, b: usize, c: DVec2| K::orient(v[a], v[b], c) == Orientation::CounterClockwise;
-    let cw = |a: usize, b: usize, c: DVec2| K::orient(v[a], v[b], c) == Orientation::Clockwise;
-    // Bottom → top is counter-clockwise, with the last added vertex at both ends.
-    let mut d: VecDeque<usize> = if ccw(0, 1, v[2]) {
-        [2, 0, 1, 2].into()
+    let n = v.len();
+    let ccw = |a: DVec2, b: DVec2, c: DVec2| K::orient(a, b, c) == Orientation::CounterClockwise;
+    let cw = |a: DVec2, b: DVec2, c: DVec2| K::orient(a, b, c) == Orientation::Clockwise;
+    // The deque lives in `d[bot..=top]` of a buffer of `2n + 1` slots, started in the middle: each
+    // vertex pushes at most once on each end, so neither end leaves the buffer. `d` holds indices,
+    // `pts` the same vertices' points (the tests read only these).
+    let mut d = vec![0usize; 2 * n + 1];
+    let mut pts = vec![DVec2::ZERO; 2 * n + 1];
+    let (mut bot, mut top) = (n - 2, n + 1);
+    let first = if ccw(v[0], v[1], v[2]) {
+        [2, 0, 1, 2]
     } else {
-        [2, 1, 0, 2].into()
+        [2, 1, 0, 2]
     };
+    for (k, &i) in first.iter().enumerate() {
+        d[bot + k] = i;
+        pts[bot + k] = v[i];
+    }
     for (i, &p) in v.iter().enumerate().skip(3) {
-        let t = d.len() - 1;
         // Inside or on the hull: not strictly right of the top edge nor of the bottom edge.
-        if !cw(d[t - 1], d[t], p) && !cw(d[0], d[1], p) {
+        if !cw(pts[top - 1], pts[top], p) && !cw(pts[bot], pts[bot + 1], p) {
             continue;
         }
-        while d.len() > 2 && !ccw(d[d.len() - 2], d[d.len() - 1], p) {
-            d.pop_back();
+        while top - bot > 1 && !ccw(pts[top - 1], pts[top], p) {
+            top -= 1;
         }
-        d.push_back(i);
-        // The bottom edge d[0] → d[1] must turn strictly left from p → d[0].
-        while d.len() > 2 && K::orient(p, v[d[0]], v[d[1]]) != Orientation::CounterClockwise {
-            d.pop_front();
+        top += 1;
+        d[top] = i;
+        pts[top] = p;
+        // The bottom edge d[bot] → d[bot + 1] must turn strictly left from p → d[bot].
+        while top - bot > 1 && !ccw(p, pts[bot], pts[bot + 1]) {
+            bot += 1;
         }
-        d.push_front(i);
+        bot -= 1;
+        d[bot] = i;
+        pts[bot] = p;
     }
-    d.pop_back();
-    let mut hull: Vec<usize> = d.into();
-    let points: Vec<DVec2> = hull.iter().map(|&i| v[i]).collect();
-    hull.rotate_left(lowest(&points));
+    let mut hull = d[bot..top].to_vec();
+    hull.rotate_left(lowest(&pts[bot..top]));
     hull
 }
