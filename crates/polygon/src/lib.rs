@@ -72,6 +72,7 @@ mod convex;
 mod error;
 mod feature;
 mod melkman;
+pub mod order;
 mod ring;
 mod simple;
 mod source_map;

@@ -55,6 +55,7 @@ use core::cmp::Ordering;
 use glam::DVec2;
 use polydist_predicates::{Kernel, Orientation, Robust};
 
+use crate::order::lex_order;
 use crate::ring::{lex_cmp, segments_intersect};
 use crate::treap::Treap;
 
@@ -86,8 +87,8 @@ pub(crate) fn first_contact_between(a: &[DVec2], b: &[DVec2]) -> Option<(usize, 
 /// that `?` stops it.
 fn sweep(ring: &Rings<'_>) -> Result<(), (usize, usize)> {
     let m = ring.total;
-    let mut order: Vec<usize> = (0..m).collect();
-    order.sort_by(|&i, &j| lex_cmp(ring.point(i), ring.point(j)).then(i.cmp(&j)));
+    let points: Vec<DVec2> = (0..m).map(|v| ring.point(v)).collect();
+    let order = lex_order(&points);
     if let Some(w) = order
         .windows(2)
         .find(|w| ring.point(w[0]) == ring.point(w[1]))

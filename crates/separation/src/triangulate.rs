@@ -3,8 +3,9 @@
 //! The classical two-phase algorithm: a plane sweep cuts the polygon into monotone pieces (Lee &
 //! Preparata 1977; Garey, Johnson, Preparata & Tarjan 1978; presented as in de Berg, Cheong, van
 //! Kreveld & Overmars, *Computational Geometry*, 3rd ed., §3.2), and each monotone piece is
-//! triangulated by the stack algorithm (§3.3). `O(n log n)` predicates and time (the sort and the
-//! sweep status, a treap with `O(log n)` expected depth); the stack phase is `O(n)`.
+//! triangulated by the stack algorithm (§3.3). `O(n log n)` predicates and time (the sweep
+//! status, a treap with `O(log n)` expected depth); the vertex order is a radix sort of the
+//! coordinates' bits (`polydist_polygon::order`, `O(n)`) and the stack phase is `O(n)`.
 //!
 //! # Degeneracies (what we changed from the textbook)
 //! The textbook assumes no two vertices on a sweep line and says nothing about collinear vertices.
@@ -49,6 +50,7 @@ use core::cmp::Ordering;
 use std::collections::HashMap;
 
 use glam::DVec2;
+use polydist_polygon::order::lex_order;
 use polydist_polygon::predicates::{Kernel, Orientation, Sign, is_valid_coordinate};
 use polydist_polygon::treap::Treap;
 
@@ -344,9 +346,8 @@ fn validate<K: Kernel>(ring: &[DVec2]) -> Result<Vec<usize>, TriangulationError>
     {
         return Err(TriangulationError::InvalidCoordinate { index });
     }
-    let mut order: Vec<usize> = (0..n).collect();
-    // A total order (ties broken by index): the unstable sort gives the one sorted permutation.
-    order.sort_unstable_by(|&a, &b| lex(ring[a], ring[b]).then(a.cmp(&b)));
+    // A total order (ties broken by index), by radix sort.
+    let order = lex_order(ring);
     for w in order.windows(2) {
         if lex(ring[w[0]], ring[w[1]]) == Ordering::Equal {
             return Err(TriangulationError::RepeatedVertex {
