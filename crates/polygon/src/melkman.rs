@@ -25,7 +25,6 @@ use crate::ring::lowest;
 pub(crate) fn hull<K: Kernel>(v: &[DVec2]) -> Vec<usize> {
     let n = v.len();
     let ccw = |a: DVec2, b: DVec2, c: DVec2| K::orient(a, b, c) == Orientation::CounterClockwise;
-    let cw = |a: DVec2, b: DVec2, c: DVec2| K::orient(a, b, c) == Orientation::Clockwise;
     // The deque lives in `d[bot..=top]` of a buffer of `2n + 1` slots, started in the middle: each
     // vertex pushes at most once on each end, so neither end leaves the buffer. `d` holds indices,
     // `pts` the same vertices' points (the tests read only these).
@@ -42,18 +41,30 @@ pub(crate) fn hull<K: Kernel>(v: &[DVec2]) -> Vec<usize> {
         pts[bot + k] = v[i];
     }
     for (i, &p) in v.iter().enumerate().skip(3) {
-        // Inside or on the hull: not strictly right of the top edge nor of the bottom edge.
-        if !cw(pts[top - 1], pts[top], p) && !cw(pts[bot], pts[bot + 1], p) {
-            continue;
+        // Inside or on the hull: not strictly right of the top edge nor of the bottom edge. The two
+        // turns tested are the first ones the pops below test (the top pops leave the bottom
+        // edge alone, and a turn is the same read from any of its three points), so they are
+        // kept, not asked again.
+        let mut at_top = Some(K::orient(pts[top - 1], pts[top], p));
+        let mut at_bot = None;
+        if at_top != Some(Orientation::Clockwise) {
+            let o = K::orient(pts[bot], pts[bot + 1], p);
+            if o != Orientation::Clockwise {
+                continue;
+            }
+            at_bot = Some(o);
         }
-        while top - bot > 1 && !ccw(pts[top - 1], pts[top], p) {
+        let ccw_or = |known: &mut Option<Orientation>, a: DVec2, b: DVec2| {
+            known.take().unwrap_or_else(|| K::orient(a, b, p)) == Orientation::CounterClockwise
+        };
+        while top - bot > 1 && !ccw_or(&mut at_top, pts[top - 1], pts[top]) {
             top -= 1;
         }
         top += 1;
         d[top] = i;
         pts[top] = p;
         // The bottom edge d[bot] → d[bot + 1] must turn strictly left from p → d[bot].
-        while top - bot > 1 && !ccw(p, pts[bot], pts[bot + 1]) {
+        while top - bot > 1 && !ccw_or(&mut at_bot, pts[bot], pts[bot + 1]) {
             bot += 1;
         }
         bot -= 1;
