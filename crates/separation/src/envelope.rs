@@ -473,11 +473,21 @@ impl<V: Vertex> Clean<V> {
         let m = self.v.len();
         let d = frame.l1 - frame.l0;
         let t = |x: V| x.approx().dot(d);
-        // Edge `k` joins positions `k` and `k + 1` (the last one, `m − 1` and 0).
-        let extent = |k: usize| (t(self.v[(k + 1) % m]) - t(self.v[k])).abs();
-        let Some(z) = (0..m).min_by(|&x, &y| extent(x).total_cmp(&extent(y))) else {
+        // Edge `k` joins positions `k` and `k + 1` (the last one, `m − 1` and 0): the first edge
+        // of least extent, each key computed once.
+        let Some(&last) = self.v.last() else {
             return;
         };
+        let (mut z, mut least) = (m - 1, (t(self.v[0]) - t(last)).abs());
+        let mut prev = t(self.v[0]);
+        for k in 0..m - 1 {
+            let next = t(self.v[k + 1]);
+            let extent = (next - prev).abs();
+            if extent.total_cmp(&least).is_lt() || (k < z && extent.total_cmp(&least).is_eq()) {
+                (z, least) = (k, extent);
+            }
+            prev = next;
+        }
         if z + 1 == m {
             return;
         }
