@@ -85,10 +85,9 @@ pub(crate) fn first_contact_between(a: &[DVec2], b: &[DVec2]) -> Option<(usize, 
 
 /// The sweep; `Err((i, j))` carries the first intersecting pair found (global edge ids, `i < j`), so
 /// that `?` stops it.
-fn sweep(ring: &Rings<'_>) -> Result<(), (usize, usize)> {
+fn sweep(ring: &Rings) -> Result<(), (usize, usize)> {
     let m = ring.total;
-    let points: Vec<DVec2> = (0..m).map(|v| ring.point(v)).collect();
-    let order = lex_order(&points);
+    let order = lex_order(&ring.points);
     if let Some(w) = order
         .windows(2)
         .find(|w| ring.point(w[0]) == ring.point(w[1]))
@@ -125,74 +124,83 @@ fn sorted(i: usize, j: usize) -> (usize, usize) {
     if i < j { (i, j) } else { (j, i) }
 }
 
-/// The rings being swept (one or two). Vertices and edges have global ids: ring `r`'s vertex `k` is
-/// `start[r] + k`, and edge `v` joins vertex `v` and the next vertex of its ring.
-struct Rings<'a> {
-    rings: [&'a [DVec2]; 2],
-    /// The global id of each ring's first vertex (`start[1] = rings[0].len()`).
-    start: [usize; 2],
-    /// How many rings are used (1 or 2).
-    count: usize,
+/// The rings being swept (one or two), flattened: vertices and edges have global ids, ring `r`'s
+/// vertex `k` being the sum of the earlier rings' lengths plus `k`, and edge `v` joins vertex `v`
+/// and the next vertex of its ring. Each vertex's ring neighbours and each edge's lexicographically
+/// smaller and larger ends are found once here (the status comparisons ask for them about
+/// `log n` times an insertion).
+struct Rings {
+    /// Every ring's points, one ring after the other.
+    points: Vec<DVec2>,
+    /// The next vertex around its ring.
+    next: Vec<usize>,
+    /// The previous vertex around its ring (the edge ending at the vertex).
+    prev: Vec<usize>,
+    /// Edge `e`'s lexicographically smaller end.
+    left: Vec<usize>,
+    /// Edge `e`'s lexicographically larger end.
+    right: Vec<usize>,
     total: usize,
 }
 
-impl<'a> Rings<'a> {
-    fn new(rings: &[&'a [DVec2]]) -> Rings<'a> {
-        let first = rings.first().copied().unwrap_or(&[]);
-        let second = rings.get(1).copied().unwrap_or(&[]);
+impl Rings {
+    fn new(rings: &[&[DVec2]]) -> Rings {
+        let total: usize = rings.iter().map(|r| r.len()).sum();
+        let mut points = Vec::with_capacity(total);
+        let (mut next, mut prev) = (Vec::with_capacity(total), Vec::with_capacity(total));
+        for ring in rings {
+            let (start, len) = (points.len(), ring.len());
+            points.extend_from_slice(ring);
+            next.extend((0..len).map(|k| start + (k + 1) % len));
+            prev.extend((0..len).map(|k| start + (k + len - 1) % len));
+        }
+        let (left, right) = (0..total)
+            .map(|e| {
+                let f = next[e];
+                if lex_cmp(points[e], points[f]) == Ordering::Less {
+                    (e, f)
+                } else {
+                    (f, e)
+                }
+            })
+            .unzip();
         Rings {
-            rings: [first, second],
-            start: [0, first.len()],
-            count: rings.len().min(2),
-            total: first.len() + if rings.len() > 1 { second.len() } else { 0 },
+            points,
+            next,
+            prev,
+            left,
+            right,
+            total,
         }
     }
 
-    /// The ring holding global vertex (or edge) `v`, and its index there.
-    fn locate(&self, v: usize) -> (usize, usize) {
-        if self.count > 1 && v >= self.start[1] {
-            (1, v - self.start[1])
-        } else {
-            (0, v)
-        }
-    }
-
+    #[inline]
     fn point(&self, v: usize) -> DVec2 {
-        let (r, k) = self.locate(v);
-        self.rings[r][k]
+        self.points[v]
     }
 
     /// The next vertex of `v` around its ring.
+    #[inline]
     fn next_vertex(&self, v: usize) -> usize {
-        let (r, k) = self.locate(v);
-        self.start[r] + (k + 1) % self.rings[r].len()
+        self.next[v]
     }
 
     /// The edge ending at vertex `v` (the previous vertex around its ring).
+    #[inline]
     fn prev(&self, v: usize) -> usize {
-        let (r, k) = self.locate(v);
-        let len = self.rings[r].len();
-        self.start[r] + (k + len - 1) % len
+        self.prev[v]
     }
 
     /// The vertex id of edge `e`'s lexicographically smaller end.
+    #[inline]
     fn left(&self, e: usize) -> usize {
-        let f = self.next_vertex(e);
-        if lex_cmp(self.point(e), self.point(f)) == Ordering::Less {
-            e
-        } else {
-            f
-        }
+        self.left[e]
     }
 
     /// The vertex id of edge `e`'s lexicographically larger end.
+    #[inline]
     fn right(&self, e: usize) -> usize {
-        let f = self.next_vertex(e);
-        if lex_cmp(self.point(e), self.point(f)) == Ordering::Less {
-            f
-        } else {
-            e
-        }
+        self.right[e]
     }
 
     /// Where edge `s`, inserted at its left end `p`, goes relative to status edge `t` (`Less`: below).
