@@ -456,7 +456,9 @@ fn clean<V: Vertex>(chain: &[V], which: Chain) -> Result<Clean<V>, SeparationErr
         closing = last.saturating_sub(1);
     }
     let m = v.len();
-    let mut edges: Vec<(usize, usize, usize)> = (1..m).map(|k| (k - 1, k, idx[k] - 1)).collect();
+    // Room for the closing edge too (a push past an exact-fit collect copies the whole vector).
+    let mut edges: Vec<(usize, usize, usize)> = Vec::with_capacity(m);
+    edges.extend((1..m).map(|k| (k - 1, k, idx[k] - 1)));
     if closed {
         edges.push((m - 1, 0, closing));
     }
@@ -841,8 +843,9 @@ fn scan<K: Kernel, V: Vertex>(c: &Ctx<'_, V>, m: usize) -> Result<(Vec<usize>, V
             }
         };
     }
-    let mut nodes = Vec::new();
-    let mut edges = Vec::new();
+    // At most `m` nodes: reserved, so the vectors never grow by copying.
+    let mut nodes = Vec::with_capacity(m);
+    let mut edges = Vec::with_capacity(m);
     let mut u = list.head;
     // At most `m` nodes; the bound keeps the loop finite on any list.
     while u != NIL && nodes.len() < m {
