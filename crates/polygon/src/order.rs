@@ -14,8 +14,8 @@ use glam::DVec2;
 /// six 2,048-entry histograms cost about as much as sorting a few hundred keys).
 const SMALL: usize = 256;
 
-/// A key and the index of its point.
-type Keyed = (u64, u32);
+/// A key and the index of its point (16 bytes, as a `u32` index would be with its padding).
+type Keyed = (u64, usize);
 
 /// Digit width of the radix passes.
 const BITS: u32 = 11;
@@ -41,23 +41,15 @@ fn key(v: f64) -> u64 {
 /// `O(n)` time and space: a radix sort by `x`; then each run of `r` points with one `x` sorted by
 /// `y`, by the same radix sort when `r ≥ 256`, by a comparison sort of `r` keys otherwise
 /// (`O(r log r)` with `r < 256`).
-///
-/// # Panics
-/// When `points.len() > u32::MAX as usize` (indices are kept as `u32`).
 #[must_use]
 pub fn lex_order(points: &[DVec2]) -> Vec<usize> {
     let n = points.len();
-    assert!(
-        u32::try_from(n).is_ok(),
-        "lex_order: more than u32::MAX points"
-    );
-    let idx = |i: usize| i as u32;
     let mut keys: Vec<Keyed> = points
         .iter()
         .enumerate()
-        .map(|(i, p)| (key(p.x), idx(i)))
+        .map(|(i, p)| (key(p.x), i))
         .collect();
-    let mut scratch = vec![(0u64, 0u32); n];
+    let mut scratch = vec![(0u64, 0usize); n];
     sort_keys(&mut keys, &mut scratch);
     // Runs of one `x`: sorted by `y` (the index breaks ties in both sorts: each is stable or keyed
     // by it).
@@ -71,13 +63,13 @@ pub fn lex_order(points: &[DVec2]) -> Vec<usize> {
         if end - start > 1 {
             let run = &mut keys[start..end];
             for k in run.iter_mut() {
-                k.0 = key(points[k.1 as usize].y);
+                k.0 = key(points[k.1].y);
             }
             sort_keys(run, &mut scratch[start..end]);
         }
         start = end;
     }
-    keys.into_iter().map(|(_, i)| i as usize).collect()
+    keys.into_iter().map(|(_, i)| i).collect()
 }
 
 /// Sorts `keys` by `(key, index)`, given that the indices are distinct and increasing (so a stable
@@ -89,7 +81,7 @@ fn sort_keys(keys: &mut [Keyed], scratch: &mut [Keyed]) {
         keys.sort_unstable();
         return;
     }
-    let mut counts = [[0u32; RADIX]; DIGITS];
+    let mut counts = [[0usize; RADIX]; DIGITS];
     let digit = |k: u64, d: usize| ((k >> (BITS as usize * d)) as usize) & (RADIX - 1);
     for &(k, _) in keys.iter() {
         for (d, c) in counts.iter_mut().enumerate() {
@@ -99,10 +91,10 @@ fn sort_keys(keys: &mut [Keyed], scratch: &mut [Keyed]) {
     // The data alternates between the two buffers; `in_keys` says where it is now.
     let mut in_keys = true;
     for (d, c) in counts.iter_mut().enumerate() {
-        if c.iter().any(|&k| k as usize == n) {
+        if c.contains(&n) {
             continue;
         }
-        let mut sum = 0u32;
+        let mut sum = 0;
         for slot in c.iter_mut() {
             let here = *slot;
             *slot = sum;
@@ -115,7 +107,7 @@ fn sort_keys(keys: &mut [Keyed], scratch: &mut [Keyed]) {
         };
         for &e in from {
             let slot = &mut c[digit(e.0, d)];
-            to[*slot as usize] = e;
+            to[*slot] = e;
             *slot += 1;
         }
         in_keys = !in_keys;
