@@ -86,7 +86,7 @@ pub(crate) fn first_contact_between(a: &[DVec2], b: &[DVec2]) -> Option<(usize, 
 /// The sweep; `Err((i, j))` carries the first intersecting pair found (global edge ids, `i < j`), so
 /// that `?` stops it.
 fn sweep(ring: &Rings) -> Result<(), (usize, usize)> {
-    let m = ring.total;
+    let m = ring.points.len();
     let order = lex_order(&ring.points);
     if let Some(w) = order
         .windows(2)
@@ -140,7 +140,6 @@ struct Rings {
     left: Vec<usize>,
     /// Edge `e`'s lexicographically larger end.
     right: Vec<usize>,
-    total: usize,
 }
 
 impl Rings {
@@ -170,7 +169,6 @@ impl Rings {
             prev,
             left,
             right,
-            total,
         }
     }
 
