@@ -810,6 +810,37 @@ fn copy_side(r: &Region, x: End, run_vertex: usize) -> Option<bool> {
 /// its cut when `R` is weakly simple: meeting only at a point of the cut reached from its two
 /// copies is not meeting). Exact, degree ≤ 4.
 pub(crate) fn meets<K: Kernel>(r: &Region, s: &Seg, t: &Seg) -> bool {
+    matches!(meeting::<K>(r, s, t), Meeting::BelowTop | Meeting::AtTop)
+}
+
+/// How two extended runs meet ([`meets`]), and what a longer `t` (its top end moved on along its
+/// line, as its top arm does) would change.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Meeting {
+    /// They do not meet, and would not with any longer `t`.
+    Apart,
+    /// They do not meet, but a longer `t` might.
+    Short,
+    /// They meet, and would with any longer `t`: they cross strictly below `t`'s top end, or
+    /// overlap along a stretch of positive length.
+    BelowTop,
+    /// They meet in a way a longer `t` need not keep (at `t`'s top end, or at one point of a
+    /// collinear overlap).
+    AtTop,
+}
+
+/// [`meets`], and what a longer `t` would change: step 5 tests a run with its bottom arm only
+/// first, and the top arm is walked only when the answer is [`Meeting::Short`] or
+/// [`Meeting::AtTop`].
+///
+/// Why. Moving `t`'s top end on along its line only widens `t`'s interval upwards; its bottom end
+/// stays. If the lines cross, the crossing stays where it is: outside `s`'s interval or below
+/// `t`'s bottom it stays outside; strictly below the old top it stays inside and is no end of the
+/// new `t` but the same bottom, so the copies of the cut found there are those found before (a
+/// meeting, or a meeting across the cut, stays one). Parallel lines that are not one line never
+/// meet. The rest (a crossing at or beyond the old top, a collinear pair) is left to the longer
+/// `t` itself, but a collinear overlap of positive length, which keeps its length.
+fn meeting<K: Kernel>(r: &Region, s: &Seg, t: &Seg) -> Meeting {
     let (ls, lt) = (s.line(r), t.line(r));
     let (is, it) = (interval(r, s, &ls), interval(r, t, &lt));
     let within = |line: &Edge, (lo, hi): (Param, Param), x: Param| {
@@ -829,12 +860,23 @@ pub(crate) fn meets<K: Kernel>(r: &Region, s: &Seg, t: &Seg) -> bool {
     if K::cross_sign(ls.a, ls.b, lt.a, lt.b) != Sign::Zero {
         let on_s = param(&ls, Locus::Cross(lt.a, lt.b));
         let on_t = param(&lt, Locus::Cross(ls.a, ls.b));
-        return within(&ls, is, on_s)
-            && within(&lt, it, on_t)
-            && !across(side_at(s, &ls, &on_s), side_at(t, &lt, &on_t));
+        if !within(&ls, is, on_s) || lt.cmp::<K>(&it.0, &on_t) == Ordering::Greater {
+            return Meeting::Apart;
+        }
+        let top = lt.cmp::<K>(&on_t, &it.1);
+        if top == Ordering::Greater {
+            return Meeting::Short;
+        }
+        let cut_apart = across(side_at(s, &ls, &on_s), side_at(t, &lt, &on_t));
+        return match (cut_apart, top) {
+            (false, Ordering::Less) => Meeting::BelowTop,
+            (false, _) => Meeting::AtTop,
+            (true, Ordering::Less) => Meeting::Apart,
+            (true, _) => Meeting::Short,
+        };
     }
     if K::orient(ls.a, ls.b, lt.a) != Orientation::Collinear {
-        return false;
+        return Meeting::Apart;
     }
     // Collinear: compare the four ends on `s`'s line.
     let (mut a, mut b) = (param(&ls, t.locus(r, false)), param(&ls, t.locus(r, true)));
@@ -852,9 +894,10 @@ pub(crate) fn meets<K: Kernel>(r: &Region, s: &Seg, t: &Seg) -> bool {
         b
     };
     match ls.cmp::<K>(&lo, &hi) {
-        Ordering::Greater => false,
-        Ordering::Less => true,
-        Ordering::Equal => !across(side_at(s, &ls, &lo), side_at(t, &ls, &lo)),
+        Ordering::Greater => Meeting::Short,
+        Ordering::Less => Meeting::BelowTop,
+        Ordering::Equal if across(side_at(s, &ls, &lo), side_at(t, &ls, &lo)) => Meeting::Short,
+        Ordering::Equal => Meeting::AtTop,
     }
 }
 
@@ -986,6 +1029,8 @@ struct Arms<'a, R, I> {
     index: I,
     /// The runs built so far, by index.
     memo: Vec<Option<Seg>>,
+    /// The bottom arms walked so far, by run index (step 5 tries a run with it alone first).
+    bottoms: Vec<Option<End>>,
     /// The run step 5 has settled the path up to (its last kept run).
     progress: usize,
 }
@@ -1014,6 +1059,7 @@ where
             resolve,
             index,
             memo: vec![None; path.len().saturating_sub(1)],
+            bottoms: vec![None; path.len().saturating_sub(1)],
             progress: 0,
         }
     }
@@ -1050,6 +1096,39 @@ where
         (self.resolve)(from, through, hit.unwrap_or(Hit::Immediate))
     }
 
+    /// The bottom arm of run `j`, walked on first use.
+    fn bottom<K: Kernel>(&mut self, j: usize) -> Option<End> {
+        if let Some(b) = self.bottoms.get(j).copied().flatten() {
+            return Some(b);
+        }
+        let path = self.path;
+        if j >= self.memo.len() {
+            return None;
+        }
+        let bottom = if j == 0 {
+            End::Run
+        } else {
+            self.arm::<K>(path[j + 1], path[j], false)?
+        };
+        self.bottoms[j] = Some(bottom);
+        Some(bottom)
+    }
+
+    /// Run `j` with its bottom arm and no top arm (its top end the run's vertex), unless it has
+    /// been built whole: a part of the extended run `ℓ_j`, for step 5's first test.
+    fn seg_below<K: Kernel>(&mut self, j: usize) -> Option<Seg> {
+        if let Some(s) = self.memo.get(j).copied().flatten() {
+            return Some(s);
+        }
+        let bottom = self.bottom::<K>(j)?;
+        Some(Seg {
+            lo: (self.index)(self.path[j]),
+            hi: (self.index)(self.path[j + 1]),
+            bottom,
+            top: End::Run,
+        })
+    }
+
     /// Run `j` with its arms, built on first use.
     fn seg_with<K: Kernel>(&mut self, j: usize) -> Option<Seg> {
         if let Some(s) = self.memo.get(j).copied().flatten() {
@@ -1059,11 +1138,7 @@ where
         if j >= k {
             return None;
         }
-        let bottom = if j == 0 {
-            End::Run
-        } else {
-            self.arm::<K>(path[j + 1], path[j], false)?
-        };
+        let bottom = self.bottom::<K>(j)?;
         let top = if j + 1 == k {
             End::Run
         } else {
@@ -1210,8 +1285,31 @@ where
     let mut a = 0;
     while a + 1 < k {
         let la = segs[segs.len() - 1];
-        let mut meets_a =
-            |x: usize| -> Option<bool> { Some(meets::<K>(region, &la, &src.seg_with::<K>(x)?)) };
+        // Run `x` with its bottom arm alone first ([`meeting`]): its top arm is walked only when
+        // that leaves the answer open, or when the run is kept.
+        let mut meets_a = |x: usize| -> Option<bool> {
+            let whole = src.memo.get(x).copied().flatten().is_some();
+            let below = src.seg_below::<K>(x)?;
+            let m = meeting::<K>(region, &la, &below);
+            // The tests check the shortcut against the whole run on every case.
+            #[cfg(test)]
+            {
+                let full = meets::<K>(region, &la, &src.seg_with::<K>(x)?);
+                assert!(
+                    !matches!(
+                        (m, full),
+                        (Meeting::BelowTop, false) | (Meeting::Apart, true)
+                    ),
+                    "step 5's shortcut {m:?} disagrees with the whole run ({full})"
+                );
+            }
+            Some(match m {
+                Meeting::BelowTop => true,
+                Meeting::Apart => false,
+                m if whole => m == Meeting::AtTop,
+                _ => meets::<K>(region, &la, &src.seg_with::<K>(x)?),
+            })
+        };
         let (mut lo, mut hi, mut step) = (a + 1, k, 1);
         while lo + step < k {
             if meets_a(lo + step)? {
