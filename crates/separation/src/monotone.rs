@@ -748,6 +748,66 @@ mod tests {
         );
     }
 
+    /// The sweep where the windows along the line hold thousands of vertices, so that
+    /// [`scan_windowed`]'s blocks are tested from the wide ones down (a star's tips facing a
+    /// curved wall, as in the pocket benchmark, at a sampling where a window spans more than
+    /// [`crate::brute`]'s `WIDE` coarse blocks): a sparse arc of radius 1 and a dense arc of radius
+    /// 2 about the same centre (either one the dense one), separated by a horizontal line, with
+    /// random radial jitter; the exact scan's nearest pair.
+    #[test]
+    fn wide_windows_are_the_exact_scan() {
+        use crate::brute::scan_winner_below;
+        use polydist_predicates::Robust;
+        use std::cmp::Ordering;
+        let mut rng = SplitMix64::new(0x3a1de);
+        for round in 0..4 {
+            let arc = |rng: &mut SplitMix64, r: f64, n: usize, jitter: f64| -> Vec<DVec2> {
+                (0..n)
+                    .map(|k| {
+                        let th = (45.0 + 90.0 * k as f64 / (n - 1) as f64).to_radians();
+                        let r = r + jitter * rng.unit_f64();
+                        DVec2::new(r * th.cos(), r * th.sin())
+                    })
+                    .collect()
+            };
+            let dense_p = round % 2 == 1;
+            let (np, nq) = if dense_p { (6000, 48) } else { (48, 6000) };
+            // Radial jitter far below the angular step (the chains stay monotone along the line).
+            let (p, q) = (arc(&mut rng, 1.0, np, 1e-7), arc(&mut rng, 2.0, nq, 1e-7));
+            let (a, b) = (DVec2::new(0.0, 1.2), DVec2::new(1.0, 1.2));
+            let Some((kp, kq, _)) = keys(&p, &q, a, b) else {
+                panic!("finite keys");
+            };
+            // Both arcs run from right to left: read them in increasing `t`.
+            assert!(kp.0[0] > kp.0[np - 1] && kq.0[0] > kq.0[nq - 1]);
+            let (fp, fq): (Vec<DVec2>, Vec<DVec2>) = (
+                p.iter().rev().copied().collect(),
+                q.iter().rev().copied().collect(),
+            );
+            let (w, _) = keyed::<Robust>(&fp, &fq, a, b, f64::INFINITY).expect("within the budget");
+            let w = w.reversed(Some(np), Some(nq));
+            let scan = scan_winner_below::<Robust>(&p, &q, f64::INFINITY).0;
+            let (got, want) = (
+                winner_dist(&p, &q, w.features()),
+                winner_dist(&p, &q, scan.features()),
+            );
+            assert_eq!(
+                Robust::cmp_dist2(got, want),
+                Ordering::Equal,
+                "round {round}"
+            );
+            // The windows are wide: the dense arc's vertices within the clearance along the line
+            // of a vertex of the sparse one, on average.
+            let u = w.pair().distance;
+            let (sparse, dense) = if dense_p { (&q, &p) } else { (&p, &q) };
+            let along: usize = sparse
+                .iter()
+                .map(|x| dense.iter().filter(|y| (y.x - x.x).abs() <= u).count())
+                .sum();
+            assert!(along > 40 * 64 * sparse.len(), "round {round}: {along}");
+        }
+    }
+
     /// Every key is within `E` of the exact `t(v)` and `d(v)`, a pair the window leaves out is
     /// farther apart along the line than `U·|b − a|` (squared: `(t(y) − t(x))² > U²·|b − a|²`,
     /// exactly), and a vertex and a vertex, an edge or a box of several vertices that
