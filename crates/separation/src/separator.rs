@@ -1114,12 +1114,9 @@ where
         Some(bottom)
     }
 
-    /// Run `j` with its bottom arm and no top arm (its top end the run's vertex), unless it has
-    /// been built whole: a part of the extended run `ℓ_j`, for step 5's first test.
+    /// Run `j` with its bottom arm and no top arm (its top end the run's vertex): a part of the
+    /// extended run `ℓ_j`, for step 5's first test.
     fn seg_below<K: Kernel>(&mut self, j: usize) -> Option<Seg> {
-        if let Some(s) = self.memo.get(j).copied().flatten() {
-            return Some(s);
-        }
         let bottom = self.bottom::<K>(j)?;
         Some(Seg {
             lo: (self.index)(self.path[j]),
@@ -1135,21 +1132,13 @@ where
             return Some(s);
         }
         let (path, k) = (self.path, self.memo.len());
-        if j >= k {
-            return None;
-        }
-        let bottom = self.bottom::<K>(j)?;
+        let below = self.seg_below::<K>(j)?;
         let top = if j + 1 == k {
             End::Run
         } else {
             self.arm::<K>(path[j], path[j + 1], true)?
         };
-        let s = Seg {
-            lo: (self.index)(path[j]),
-            hi: (self.index)(path[j + 1]),
-            bottom,
-            top,
-        };
+        let s = Seg { top, ..below };
         self.memo[j] = Some(s);
         Some(s)
     }
@@ -1288,7 +1277,9 @@ where
         // Run `x` with its bottom arm alone first ([`meeting`]): its top arm is walked only when
         // that leaves the answer open, or when the run is kept.
         let mut meets_a = |x: usize| -> Option<bool> {
-            let whole = src.memo.get(x).copied().flatten().is_some();
+            if let Some(whole) = src.memo.get(x).copied().flatten() {
+                return Some(meets::<K>(region, &la, &whole));
+            }
             let below = src.seg_below::<K>(x)?;
             let m = meeting::<K>(region, &la, &below);
             // The tests check the shortcut against the whole run on every case.
@@ -1306,7 +1297,6 @@ where
             Some(match m {
                 Meeting::BelowTop => true,
                 Meeting::Apart => false,
-                m if whole => m == Meeting::AtTop,
                 _ => meets::<K>(region, &la, &src.seg_with::<K>(x)?),
             })
         };
