@@ -1,8 +1,9 @@
 //! The sweep status: an ordered set of small integer ids, kept as a treap in an arena. Used by the
 //! simplicity sweep here and by the triangulation sweep of `polydist-separation`.
 //!
-//! Positions are decided by a caller-supplied comparator during insertion only; removal and the
-//! neighbour queries follow parent links and never compare. So whatever the comparator answers (even
+//! Positions are decided by a caller-supplied comparator during insertion only (or given outright:
+//! [`Treap::insert_after`], [`Treap::replace`]); removal and the neighbour queries follow parent
+//! links and never compare. So whatever the comparator answers (even
 //! inconsistently), the structure stays a valid binary tree, every operation terminates, and nothing
 //! panics: insertion descends at most the tree's height, removal rotates the node down at most its
 //! height, and the neighbour walks climb or descend at most the height.
@@ -81,6 +82,13 @@ impl Treap {
                 self.nodes[cur].right
             };
         }
+        self.link_leaf(id, parent, go_left);
+        Ok(())
+    }
+
+    /// Hangs the unlinked `id` as a leaf below `parent` (or as the root when `parent` is `NIL`)
+    /// and rotates it up to restore the heap order on priorities.
+    fn link_leaf(&mut self, id: usize, parent: usize, go_left: bool) {
         self.nodes[id] = Node {
             left: NIL,
             right: NIL,
@@ -95,13 +103,57 @@ impl Treap {
         } else {
             self.nodes[parent].right = id;
         }
-        // Restore the heap order on priorities; each rotation lifts `id` one level.
+        // Each rotation lifts `id` one level.
         while self.nodes[id].parent != NIL
             && self.nodes[self.nodes[id].parent].priority < self.nodes[id].priority
         {
             self.rotate_up(id);
         }
-        Ok(())
+    }
+
+    /// Inserts `id` just after `anchor` in the order, without comparing: `O(height)` pointer steps
+    /// and rotations. `false` (and nothing done) when `anchor` is absent or `id` present.
+    pub fn insert_after(&mut self, anchor: usize, id: usize) -> bool {
+        if !self.nodes[anchor].linked || self.nodes[id].linked {
+            return false;
+        }
+        // The slot just after `anchor`: its right child, or the left end of its right subtree.
+        let (mut parent, mut go_left) = (anchor, false);
+        let mut cur = self.nodes[anchor].right;
+        while cur != NIL {
+            (parent, go_left) = (cur, true);
+            cur = self.nodes[cur].left;
+        }
+        self.link_leaf(id, parent, go_left);
+        true
+    }
+
+    /// Puts `new` in the place of `old` (same position in the order), in `O(1)`: `new` takes
+    /// over `old`'s links and its priority, so the tree keeps its shape. For a sweep whose edge ends
+    /// where the next begins. `false` (and nothing done) when `old` is absent or `new` present.
+    ///
+    /// A position keeps the priority of the id first inserted there; priorities stay a fixed hash of
+    /// ids unrelated to the order, so the expected height is unchanged.
+    pub fn replace(&mut self, old: usize, new: usize) -> bool {
+        if old == new || !self.nodes[old].linked || self.nodes[new].linked {
+            return false;
+        }
+        let node = self.nodes[old];
+        self.nodes[new] = node;
+        for child in [node.left, node.right] {
+            if child != NIL {
+                self.nodes[child].parent = new;
+            }
+        }
+        self.replace_child(node.parent, old, new);
+        self.nodes[old] = Node {
+            left: NIL,
+            right: NIL,
+            parent: NIL,
+            priority: priority(old),
+            linked: false,
+        };
+        true
     }
 
     /// Removes `id`; `false` (and nothing done) when it was absent.
@@ -132,8 +184,8 @@ impl Treap {
             left: NIL,
             right: NIL,
             parent: NIL,
+            priority: priority(id),
             linked: false,
-            ..self.nodes[id]
         };
         true
     }
@@ -278,6 +330,53 @@ mod tests {
             assert_eq!(t.prev(id), pos.checked_sub(1).map(|p| expected[p]));
             assert_eq!(t.next(id), expected.get(pos + 1).copied());
         }
+    }
+
+    /// Checks the parent links and the heap order on the stored priorities.
+    fn is_heap(t: &Treap) -> bool {
+        (0..t.nodes.len()).filter(|&i| t.nodes[i].linked).all(|i| {
+            let n = t.nodes[i];
+            [n.left, n.right]
+                .into_iter()
+                .filter(|&c| c != NIL)
+                .all(|c| {
+                    t.nodes[c].linked && t.nodes[c].parent == i && t.nodes[c].priority <= n.priority
+                })
+                && (n.parent != NIL || t.root == i)
+        })
+    }
+
+    #[test]
+    fn positional_inserts_and_replacements_keep_order_and_heap() {
+        // Build 0, 2, 4, … by comparisons, place each odd id after its even predecessor, then
+        // replace every multiple of 4 by itself + 300: the order must follow the positions given.
+        let mut t = Treap::new(600);
+        for id in (0..200).step_by(2) {
+            assert_eq!(t.insert::<()>(id, |other| Ok(id.cmp(&other))), Ok(()));
+        }
+        for id in (1..200).step_by(2) {
+            assert!(t.insert_after(id - 1, id));
+        }
+        assert_eq!(in_order(&t), (0..200).collect::<Vec<_>>());
+        assert!(is_heap(&t));
+        for id in (0..200).step_by(4) {
+            assert!(t.replace(id, id + 300));
+        }
+        let expected: Vec<usize> = (0..200)
+            .map(|id| if id % 4 == 0 { id + 300 } else { id })
+            .collect();
+        assert_eq!(in_order(&t), expected);
+        assert!(is_heap(&t));
+        // Refused: an absent anchor or old id, a present new id.
+        assert!(!t.insert_after(0, 500));
+        assert!(!t.insert_after(1, 2));
+        assert!(!t.replace(0, 501));
+        assert!(!t.replace(1, 2));
+        // A replaced position is removed like any other, and the old id can come back.
+        assert!(t.remove(300));
+        assert_eq!(t.insert::<()>(0, |_| Ok(Ordering::Less)), Ok(()));
+        assert_eq!(in_order(&t)[0], 0);
+        assert!(is_heap(&t));
     }
 
     #[test]

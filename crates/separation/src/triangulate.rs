@@ -421,8 +421,17 @@ const NIL: usize = usize::MAX;
 // Phase 1: monotone decomposition.
 
 /// The diagonals that cut the polygon into pieces monotone in the lexicographic order (de Berg et
-/// al. §3.2, with "downward sweep / left of" mapped to "rightward sweep / below"). The status holds
-/// the edges `k → k + 1` that go forward in the order (the polygon's interior is above them).
+/// al. §3.2, with "downward sweep / left of" mapped to "rightward sweep / below").
+///
+/// The sweep line crosses the polygon in intervals, each bounded below by a *lower* edge `k → k + 1`
+/// going forward in the order (interior above) and above by an *upper* edge going backward. The
+/// status holds the lower edges, and `pair` links each interval's two edges both ways. The textbook
+/// searches the status at split, merge and upper-chain vertices for "the edge below"; here it is
+/// the partner of an edge ending at the vertex (merge, upper-chain) and only a split vertex, which
+/// lies inside an interval, searches. A start vertex searches for its place; a lower-chain vertex
+/// puts its outgoing edge in its incoming edge's place ([`Treap::replace`], `O(1)`), and a split
+/// vertex's new interval goes right after the one it splits ([`Treap::insert_after`]): so only the
+/// local minima in the order (start and split vertices) compare.
 fn monotone_diagonals<K: Kernel>(
     ring: &[DVec2],
     order: &[usize],
@@ -430,6 +439,7 @@ fn monotone_diagonals<K: Kernel>(
     let n = ring.len();
     let mut status = Treap::new(n);
     let mut helper = vec![NIL; n];
+    let mut pair = vec![NIL; n];
     let mut is_merge = vec![false; n];
     let mut diagonals = Vec::new();
     let bad = |index: usize, what| TriangulationError::Inconsistent { index, what };
@@ -448,77 +458,96 @@ fn monotone_diagonals<K: Kernel>(
         diagonals.push((a, b));
         Ok(())
     };
+    // The helper of a lower edge in the status (set whenever it is inserted).
+    let helper_of = |helper: &[usize], e: usize, v: usize| match helper.get(e) {
+        Some(&h) if h != NIL => Ok(h),
+        _ => Err(bad(v, "an edge of the sweep has no helper")),
+    };
     for &v in order {
         let (p, q) = ((v + n - 1) % n, (v + 1) % n);
         let after_p = lex(ring[p], ring[v]) == Ordering::Greater;
         let after_q = lex(ring[q], ring[v]) == Ordering::Greater;
         let turn = K::orient(ring[p], ring[v], ring[q]);
-        let e_in = p; // edge p → v
-        let e_out = v; // edge v → q
+        // Edge `p → v` is `p`, edge `v → q` is `v`.
         match (after_p, after_q) {
-            (true, true) => {
-                if turn == Orientation::Collinear {
-                    return Err(TriangulationError::Degenerate { index: v });
+            (true, true) => match turn {
+                Orientation::Collinear => return Err(TriangulationError::Degenerate { index: v }),
+                Orientation::CounterClockwise => {
+                    // Start vertex: a new interval, lower edge `v`, upper edge `p`.
+                    status.insert(v, |e| {
+                        above(e, v).map(|b| if b { Ordering::Greater } else { Ordering::Less })
+                    })?;
+                    (pair[v], pair[p], helper[v]) = (p, v, v);
                 }
-                if turn == Orientation::Clockwise {
-                    // Split vertex: join it to the helper of the edge below.
-                    let ej = status
+                Orientation::Clockwise => {
+                    // Split vertex, inside the interval (l, u): join it to the helper of `l`; the
+                    // interval becomes (l, p) below and (v, u) above.
+                    let l = status
                         .last_where(|e| above(e, v))?
                         .ok_or_else(|| bad(v, "no edge below a split vertex"))?;
-                    diagonal(v, helper[ej], &mut diagonals)?;
-                    helper[ej] = v;
+                    let u = pair[l];
+                    diagonal(v, helper_of(&helper, l, v)?, &mut diagonals)?;
+                    if u == NIL || !status.insert_after(l, v) {
+                        return Err(bad(v, "a split vertex's interval is not in the status"));
+                    }
+                    (pair[l], pair[p], helper[l]) = (p, l, v);
+                    (pair[v], pair[u], helper[v]) = (u, v, v);
                 }
-                status.insert(e_out, |e| {
-                    above(e, v).map(|b| if b { Ordering::Greater } else { Ordering::Less })
-                })?;
-                helper[e_out] = v;
-            }
+            },
             (false, false) => {
                 if turn == Orientation::Collinear {
                     return Err(TriangulationError::Degenerate { index: v });
                 }
-                let h = helper[e_in];
-                if h == NIL || !status.remove(e_in) {
+                // Lower edge `p` ends (interval (p, pair[p])).
+                let h = helper_of(&helper, p, v)?;
+                if !status.remove(p) {
                     return Err(bad(v, "an ending edge is not in the status"));
                 }
                 if is_merge[h] {
                     diagonal(v, h, &mut diagonals)?;
                 }
-                if turn == Orientation::Clockwise {
-                    // Merge vertex.
-                    is_merge[v] = true;
-                    let ej = status
-                        .last_where(|e| above(e, v))?
-                        .ok_or_else(|| bad(v, "no edge below a merge vertex"))?;
-                    if is_merge[helper[ej]] {
-                        diagonal(v, helper[ej], &mut diagonals)?;
+                if turn == Orientation::CounterClockwise {
+                    // End vertex: the interval (p, v) closes.
+                    if pair[p] != v {
+                        return Err(bad(v, "an end vertex's edges bound different intervals"));
                     }
-                    helper[ej] = v;
+                } else {
+                    // Merge vertex: (l, v) below and (p, u) above become (l, u).
+                    is_merge[v] = true;
+                    let (l, u) = (pair[v], pair[p]);
+                    if l == NIL || u == NIL {
+                        return Err(bad(v, "a merge vertex's intervals are not in the sweep"));
+                    }
+                    let hl = helper_of(&helper, l, v)?;
+                    if is_merge[hl] {
+                        diagonal(v, hl, &mut diagonals)?;
+                    }
+                    (pair[l], pair[u], helper[l]) = (u, l, v);
                 }
             }
             (false, true) => {
-                // Regular vertex on a lower chain (interior above).
-                let h = helper[e_in];
-                if h == NIL || !status.remove(e_in) {
+                // Lower-chain vertex: edge `v` takes the place of edge `p` under the same upper edge.
+                let h = helper_of(&helper, p, v)?;
+                let u = pair[p];
+                if u == NIL || !status.replace(p, v) {
                     return Err(bad(v, "an ending edge is not in the status"));
                 }
                 if is_merge[h] {
                     diagonal(v, h, &mut diagonals)?;
                 }
-                status.insert(e_out, |e| {
-                    above(e, v).map(|b| if b { Ordering::Greater } else { Ordering::Less })
-                })?;
-                helper[e_out] = v;
+                (pair[v], pair[u], helper[v]) = (u, v, v);
             }
             (true, false) => {
-                // Regular vertex on an upper chain (interior below).
-                let ej = status
-                    .last_where(|e| above(e, v))?
-                    .ok_or_else(|| bad(v, "no edge below an upper vertex"))?;
-                if is_merge[helper[ej]] {
-                    diagonal(v, helper[ej], &mut diagonals)?;
+                // Upper-chain vertex: edge `p` takes the place of edge `v` above the lower edge `l`.
+                let l = pair[v];
+                if l == NIL {
+                    return Err(bad(v, "an ending edge is not in the sweep"));
                 }
-                helper[ej] = v;
+                let hl = helper_of(&helper, l, v)?;
+                if is_merge[hl] {
+                    diagonal(v, hl, &mut diagonals)?;
+                }
+                (pair[l], pair[p], helper[l]) = (p, l, v);
             }
         }
     }
