@@ -647,15 +647,7 @@ fn halves<K: Kernel>(
     let pts = |h: &[usize]| h.iter().map(|&i| ring[i]).collect::<Vec<DVec2>>();
     let (r1, r2) = (pts(&h1), pts(&h2));
     let (t1, t2) = (cache.triangulate::<K>(&r1)?, cache.triangulate::<K>(&r2)?);
-    let mut triangles = Vec::with_capacity(n - 2);
-    for (h, tr) in [(&h1, &t1), (&h2, &t2)] {
-        triangles.extend(
-            tr.triangles()
-                .iter()
-                .map(|c| c.map(|i| h[i as usize] as u32)),
-        );
-    }
-    let tri = Triangulation::glue(n, triangles).ok()?;
+    let tri = Triangulation::joined(n, (&h1, &t1), (&h2, &t2))?;
     let first = shortest_path::<K>(&t2, &r2, n - u, 0);
     let second = shortest_path::<K>(&t1, &r1, u - w, t - w);
     let path: Vec<usize> = first
@@ -672,12 +664,12 @@ fn halves<K: Kernel>(
 /// checked point for point) and its triangles relabelled; otherwise it is triangulated and kept.
 #[derive(Default)]
 pub(crate) struct Halves {
-    kept: Vec<(Vec<DVec2>, Vec<[u32; 3]>)>,
+    kept: Vec<(Vec<DVec2>, Triangulation)>,
 }
 
 impl Halves {
     /// A triangulation of the simple polygon `pts`. `O(n)` when a rotation of it is kept (the
-    /// lookup and the adjacency), else [`triangulate`]'s `O(n log n)`.
+    /// lookup and the relabelling), else [`triangulate`]'s `O(n log n)`.
     fn triangulate<K: Kernel>(&mut self, pts: &[DVec2]) -> Option<Triangulation> {
         let m = pts.len();
         for (c, tris) in &self.kept {
@@ -688,14 +680,12 @@ impl Halves {
                 continue;
             };
             if (0..m).all(|i| c[(i + off) % m] == pts[i]) {
-                // Kept vertex `j` is vertex `j − off` (mod m) of `pts`.
-                let relabel = |j: u32| ((j as usize + m - off) % m) as u32;
-                let tris = tris.iter().map(|t| t.map(relabel)).collect();
-                return Triangulation::glue(m, tris).ok();
+                // Vertex `i` of `pts` is kept vertex `i + off` (mod m).
+                return Some(tris.rotated(off));
             }
         }
         let t = triangulate::<K>(pts).ok()?;
-        self.kept.push((pts.to_vec(), t.triangles().to_vec()));
+        self.kept.push((pts.to_vec(), t.clone()));
         Some(t)
     }
 }

@@ -232,6 +232,88 @@ impl Triangulation {
         Ok(())
     }
 
+    /// The same triangulation of the ring rotated by `off`: its vertex `i` is vertex `i + off`
+    /// (mod `n`) of `self`'s ring. `O(n)`, no sorting (the adjacency is relabelled, not rebuilt).
+    pub(crate) fn rotated(&self, off: usize) -> Triangulation {
+        let n = self.vertex_triangle.len();
+        let off = off % n.max(1);
+        let relabel = |j: u32| ((j as usize + n - off) % n) as u32;
+        Triangulation {
+            triangles: self.triangles.iter().map(|t| t.map(relabel)).collect(),
+            neighbors: self
+                .neighbors
+                .iter()
+                .map(|s| {
+                    s.map(|x| match x {
+                        Neighbor::RingEdge(k) => Neighbor::RingEdge(relabel(k)),
+                        t => t,
+                    })
+                })
+                .collect(),
+            vertex_triangle: (0..n)
+                .map(|i| self.vertex_triangle[(i + off) % n])
+                .collect(),
+        }
+    }
+
+    /// Two triangulated polygons glued along a common side into a triangulation of a ring of `n`
+    /// vertices: each half is given with its vertices' ring indices `h` (consecutive around the
+    /// ring, `h[k + 1] = h[k] + 1 mod n`), and each half's closing side (its last vertex to its
+    /// first) is the cut, shared with the other half, so it becomes a diagonal. `O(n)`, without
+    /// [`Triangulation::glue`]'s sort. `None` when the halves do not fit (sizes, or the cuts'
+    /// ends differ).
+    pub(crate) fn joined(
+        n: usize,
+        (h1, t1): (&[usize], &Triangulation),
+        (h2, t2): (&[usize], &Triangulation),
+    ) -> Option<Triangulation> {
+        let (m1, m2) = (h1.len(), h2.len());
+        let fits = m1 >= 3
+            && m2 >= 3
+            && m1 + m2 == n + 2
+            && t1.vertex_count() == m1
+            && t2.vertex_count() == m2
+            && h1[0] == h2[m2 - 1]
+            && h1[m1 - 1] == h2[0];
+        if !fits {
+            return None;
+        }
+        // The triangle of each half on its closing side.
+        let on_cut = |t: &Triangulation, m: usize| {
+            t.neighbors
+                .iter()
+                .position(|s| s.contains(&Neighbor::RingEdge((m - 1) as u32)))
+        };
+        let (c1, c2) = (on_cut(t1, m1)?, on_cut(t2, m2)?);
+        let base = t1.triangles.len();
+        let (c1, c2) = (c1 as u32, (c2 + base) as u32);
+        let mut triangles = Vec::with_capacity(n - 2);
+        let mut neighbors = Vec::with_capacity(n - 2);
+        let mut vertex_triangle = vec![u32::MAX; n];
+        for (h, t, off, across) in [(h1, t1, 0u32, c2), (h2, t2, base as u32, c1)] {
+            let m = h.len();
+            triangles.extend(t.triangles.iter().map(|c| c.map(|i| h[i as usize] as u32)));
+            neighbors.extend(t.neighbors.iter().map(|s| {
+                s.map(|x| match x {
+                    Neighbor::Triangle(u) => Neighbor::Triangle(u + off),
+                    Neighbor::RingEdge(k) if k as usize == m - 1 => Neighbor::Triangle(across),
+                    Neighbor::RingEdge(k) => Neighbor::RingEdge(h[k as usize] as u32),
+                })
+            }));
+            for (i, &v) in h.iter().enumerate() {
+                vertex_triangle[v] = t.vertex_triangle[i] + off;
+            }
+        }
+        if vertex_triangle.contains(&u32::MAX) {
+            return None;
+        }
+        Some(Triangulation {
+            triangles,
+            neighbors,
+            vertex_triangle,
+        })
+    }
+
     /// Builds the adjacency of `n − 2` triangles of a ring of `n` vertices.
     pub(crate) fn glue(n: usize, triangles: Vec<[u32; 3]>) -> Result<Self, TriangulationError> {
         let bad = |index: u32, what| TriangulationError::Inconsistent {
@@ -928,6 +1010,62 @@ mod tests {
         assert_eq!(t.neighbors()[0][2], Neighbor::Triangle(1));
         assert_eq!(t.neighbors()[3][0], Neighbor::Triangle(2));
         assert_eq!(t.neighbors()[3][2], Neighbor::RingEdge(5));
+    }
+
+    /// A star-shaped ring: `k` spikes of radius 3 between notches of radius 1 (counter-clockwise).
+    fn star(k: usize) -> Vec<DVec2> {
+        (0..2 * k)
+            .map(|i| {
+                let a = std::f64::consts::PI * i as f64 / k as f64;
+                let r = if i % 2 == 0 { 3.0 } else { 1.0 };
+                DVec2::new(r * a.cos(), r * a.sin())
+            })
+            .collect()
+    }
+
+    #[test]
+    fn rotated_and_joined_match_glue() {
+        use polydist_polygon::predicates::Robust;
+        let ring = star(9);
+        let n = ring.len();
+        let t = triangulate::<Robust>(&ring).expect("a star");
+        for off in [0, 1, 5, n - 1] {
+            let rot: Vec<DVec2> = (0..n).map(|i| ring[(i + off) % n]).collect();
+            let relabel = |j: u32| ((j as usize + n - off) % n) as u32;
+            let tris = t.triangles().iter().map(|c| c.map(relabel)).collect();
+            let glued = Triangulation::glue(n, tris).expect("relabelled");
+            let r = t.rotated(off);
+            assert_eq!(
+                (r.triangles(), r.neighbors()),
+                (glued.triangles(), glued.neighbors())
+            );
+            assert_eq!(r.check::<Robust>(&rot), Ok(()));
+        }
+        // Cut the star along chords between notches (inside the notches' convex 9-gon), one cutting off a single spike.
+        for (w, u) in [(1usize, 11usize), (3, 9), (1, 3)] {
+            let h1: Vec<usize> = (w..=u).collect();
+            let h2: Vec<usize> = (u..n).chain(0..=w).collect();
+            let pts = |h: &[usize]| h.iter().map(|&i| ring[i]).collect::<Vec<DVec2>>();
+            let t1 = triangulate::<Robust>(&pts(&h1)).expect("a simple half");
+            let t2 = triangulate::<Robust>(&pts(&h2)).expect("a simple half");
+            let mut tris = Vec::new();
+            for (h, tr) in [(&h1, &t1), (&h2, &t2)] {
+                tris.extend(
+                    tr.triangles()
+                        .iter()
+                        .map(|c| c.map(|i| h[i as usize] as u32)),
+                );
+            }
+            let glued = Triangulation::glue(n, tris).expect("two halves");
+            let j = Triangulation::joined(n, (&h1, &t1), (&h2, &t2)).expect("they fit");
+            assert_eq!(
+                (j.triangles(), j.neighbors()),
+                (glued.triangles(), glued.neighbors())
+            );
+            assert_eq!(j.check::<Robust>(&ring), Ok(()));
+            // Halves that do not share their closing side are refused.
+            assert!(Triangulation::joined(n, (&h1, &t1), (&h1, &t1)).is_none());
+        }
     }
 
     #[test]
