@@ -14,6 +14,9 @@ use glam::DVec2;
 /// six 2,048-entry histograms cost about as much as sorting a few hundred keys).
 const SMALL: usize = 256;
 
+/// At most this many keys are sorted by insertion (a library sort's call costs more for them).
+const TINY: usize = 12;
+
 /// A key and the index of its point (16 bytes, as a `u32` index would be with its padding).
 type Keyed = (u64, usize);
 
@@ -77,10 +80,32 @@ pub fn lex_order(points: &[DVec2]) -> Vec<usize> {
 /// `scratch.len() == keys.len()`.
 fn sort_keys(keys: &mut [Keyed], scratch: &mut [Keyed]) {
     let n = keys.len();
+    if n <= TINY {
+        // Insertion sort, stable by key: the increasing indices break ties. (Runs of one `x` are
+        // mostly 2 to 4 points, the sides of combs' teeth and of axis-parallel polygons.)
+        for i in 1..n {
+            let e = keys[i];
+            let mut j = i;
+            while j > 0 && keys[j - 1].0 > e.0 {
+                keys[j] = keys[j - 1];
+                j -= 1;
+            }
+            keys[j] = e;
+        }
+        return;
+    }
     if n < SMALL {
         keys.sort_unstable();
         return;
     }
+    radix_sort(keys, scratch);
+}
+
+/// The radix passes of [`sort_keys`], apart: their 96 KB of histograms on the stack would make
+/// every call probe that much stack, the short runs' calls too.
+#[inline(never)]
+fn radix_sort(keys: &mut [Keyed], scratch: &mut [Keyed]) {
+    let n = keys.len();
     let mut counts = [[0usize; RADIX]; DIGITS];
     let digit = |k: u64, d: usize| ((k >> (BITS as usize * d)) as usize) & (RADIX - 1);
     for &(k, _) in keys.iter() {
@@ -158,6 +183,15 @@ mod tests {
         #[test]
         fn radix_order_is_the_comparison_order(
             pts in prop::collection::vec((coordinate(), coordinate()), 0..1200),
+        ) {
+            let points: Vec<DVec2> = pts.into_iter().map(|(x, y)| DVec2::new(x, y)).collect();
+            prop_assert_eq!(lex_order(&points), reference(&points));
+        }
+
+        /// Few points: runs of one `x` short enough for the insertion sort, repeated points among them.
+        #[test]
+        fn short_runs_order_like_the_comparison_order(
+            pts in prop::collection::vec((coordinate(), coordinate()), 0..40),
         ) {
             let points: Vec<DVec2> = pts.into_iter().map(|(x, y)| DVec2::new(x, y)).collect();
             prop_assert_eq!(lex_order(&points), reference(&points));
