@@ -237,7 +237,10 @@ impl Triangulation {
     pub(crate) fn rotated(&self, off: usize) -> Triangulation {
         let n = self.vertex_triangle.len();
         let off = off % n.max(1);
-        let relabel = |j: u32| ((j as usize + n - off) % n) as u32;
+        let relabel = |j: u32| {
+            let i = j as usize + n - off;
+            (if i >= n { i - n } else { i }) as u32
+        };
         Triangulation {
             triangles: self.triangles.iter().map(|t| t.map(relabel)).collect(),
             neighbors: self
@@ -251,7 +254,7 @@ impl Triangulation {
                 })
                 .collect(),
             vertex_triangle: (0..n)
-                .map(|i| self.vertex_triangle[(i + off) % n])
+                .map(|i| self.vertex_triangle[if i + off >= n { i + off - n } else { i + off }])
                 .collect(),
         }
     }
@@ -338,7 +341,7 @@ impl Triangulation {
                     return Err(bad(u, "a corner is not a ring vertex"));
                 }
                 vertex_triangle[u as usize] = t;
-                if (u as usize + 1) % n == w as usize {
+                if succ(u as usize, n) == w as usize {
                     neighbors[t as usize][k] = Neighbor::RingEdge(u);
                 } else {
                     sides.push((u.min(w), u.max(w), t, ((k as u8) << 1) | u8::from(u < w)));
@@ -408,6 +411,18 @@ fn offsets_of(count: &[usize]) -> Vec<usize> {
         offsets.push(acc);
     }
     offsets
+}
+
+/// `i + 1 mod n` for `i < n`, without a division (the sweeps' and the gluing's hot loops).
+#[inline]
+fn succ(i: usize, n: usize) -> usize {
+    if i + 1 == n { 0 } else { i + 1 }
+}
+
+/// `i − 1 mod n` for `i < n`, without a division.
+#[inline]
+fn pred(i: usize, n: usize) -> usize {
+    if i == 0 { n - 1 } else { i - 1 }
 }
 
 /// The sweep order: `(x, y)` lexicographically (exact; `−0 = +0`).
@@ -540,14 +555,14 @@ fn monotone_diagonals<K: Kernel>(
     let bad = |index: usize, what| TriangulationError::Inconsistent { index, what };
     // Is the point `v` above the stored edge `e` (which spans it in the sweep order)?
     let above = |e: usize, v: usize| -> Result<bool, TriangulationError> {
-        match K::orient(ring[e], ring[(e + 1) % n], ring[v]) {
+        match K::orient(ring[e], ring[succ(e, n)], ring[v]) {
             Orientation::CounterClockwise => Ok(true),
             Orientation::Clockwise => Ok(false),
             Orientation::Collinear => Err(bad(v, "a vertex lies on an edge")),
         }
     };
     let diagonal = |a: usize, b: usize, diagonals: &mut Vec<(usize, usize)>| {
-        if a == b || (a + 1) % n == b || (b + 1) % n == a {
+        if a == b || succ(a, n) == b || succ(b, n) == a {
             return Err(bad(a, "a diagonal joins neighbours"));
         }
         diagonals.push((a, b));
@@ -559,7 +574,7 @@ fn monotone_diagonals<K: Kernel>(
         _ => Err(bad(v, "an edge of the sweep has no helper")),
     };
     for &v in order {
-        let (p, q) = ((v + n - 1) % n, (v + 1) % n);
+        let (p, q) = (pred(v, n), succ(v, n));
         let after_p = lex(ring[p], ring[v]) == Ordering::Greater;
         let after_q = lex(ring[q], ring[v]) == Ordering::Greater;
         let turn = K::orient(ring[p], ring[v], ring[q]);
@@ -689,7 +704,7 @@ fn pieces<K: Kernel>(
     let mut out = vec![usize::MAX; total];
     let mut fill: Vec<usize> = offsets[..n].iter().map(|&o| o + 1).collect();
     for v in 0..n {
-        out[offsets[v]] = (v + 1) % n;
+        out[offsets[v]] = succ(v, n);
     }
     for &(a, b) in diagonals {
         out[fill[a]] = b;
@@ -770,7 +785,7 @@ fn pieces<K: Kernel>(
                 }
                 let w = out[id];
                 // Coming into w from v: take the side just clockwise of w → v.
-                slot = if (w + n - 1) % n == v {
+                slot = if pred(w, n) == v {
                     sides(w).len() - 1
                 } else {
                     match sides(w).iter().position(|&x| x == v) {
