@@ -171,11 +171,14 @@ pub(crate) fn sweep_envelopes<K: Kernel>(
     frames: Frames,
     cut: f64,
 ) -> Option<(Cand, usize)> {
+    // Sized up front: collecting into an `Option` would grow the vector by doubling, touching
+    // twice its memory (and glibc hands such freed growth back to the system at every query).
     let segs = |c: &Prepared| -> Option<Vec<(DVec2, DVec2)>> {
-        c.edges
-            .iter()
-            .map(|e| e.as_ref().map(|e| (e.a, e.b)))
-            .collect()
+        let mut out = Vec::with_capacity(c.edges.len());
+        for e in &c.edges {
+            out.push(e.as_ref().map(|e| (e.a, e.b))?);
+        }
+        Some(out)
     };
     let (sp, sq) = (segs(pp)?, segs(qq)?);
     let (a, b) = (frames.p.l0, frames.p.l1);

@@ -1145,9 +1145,12 @@ fn runs_with_arms<K: Kernel>(
     index: impl Fn(usize) -> usize,
 ) -> Option<Vec<Seg>> {
     let mut arms = Arms::new(tri, ring, path, budget, resolve, index);
-    (0..arms.memo.len())
-        .map(|j| arms.seg_with::<K>(j))
-        .collect()
+    // Sized up front (collecting into an `Option` would grow it by doubling).
+    let mut segs = Vec::with_capacity(arms.memo.len());
+    for j in 0..arms.memo.len() {
+        segs.push(arms.seg_with::<K>(j)?);
+    }
+    Some(segs)
 }
 
 /// Arms walked before [`Arms`] extrapolates their steps to all the runs.
@@ -1260,7 +1263,11 @@ where
 {
     let k = src.memo.len();
     let first = src.seg_with::<K>(0)?;
-    let (mut kept, mut segs) = (vec![0], vec![first]);
+    // At most one kept run a run, reserved up front: growing by doubling would touch twice the
+    // memory (the combs keep half their runs).
+    let (mut kept, mut segs) = (Vec::with_capacity(k), Vec::with_capacity(k));
+    kept.push(0);
+    segs.push(first);
     let mut a = 0;
     while a + 1 < k {
         let la = segs[segs.len() - 1];
