@@ -361,20 +361,7 @@ impl Triangulation {
         }
         for lo in 0..n {
             let bucket = &mut bucketed[start[lo]..start[lo + 1]];
-            if bucket.len() <= 12 {
-                // Insertion sort: most buckets hold one pair (a library sort's call costs more).
-                for i in 1..bucket.len() {
-                    let e = bucket[i];
-                    let mut j = i;
-                    while j > 0 && bucket[j - 1].0 > e.0 {
-                        bucket[j] = bucket[j - 1];
-                        j -= 1;
-                    }
-                    bucket[j] = e;
-                }
-            } else {
-                bucket.sort_unstable_by_key(|s| s.0);
-            }
+            bucket.sort_unstable_by_key(|s| s.0);
             let mut i = 0;
             while i < bucket.len() {
                 let (hi, t, kd) = bucket[i];
