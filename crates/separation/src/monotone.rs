@@ -171,8 +171,7 @@ pub(crate) fn sweep_envelopes<K: Kernel>(
     frames: Frames,
     cut: f64,
 ) -> Option<(Cand, usize)> {
-    // Sized up front: collecting into an `Option` would grow the vector by doubling, touching
-    // twice its memory (and glibc hands such freed growth back to the system at every query).
+    // Sized up front (collecting into an `Option` would grow it by doubling).
     let segs = |c: &Prepared| -> Option<Vec<(DVec2, DVec2)>> {
         let mut out = Vec::with_capacity(c.edges.len());
         for e in &c.edges {

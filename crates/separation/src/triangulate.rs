@@ -253,8 +253,10 @@ impl Triangulation {
                     })
                 })
                 .collect(),
-            vertex_triangle: (0..n)
-                .map(|i| self.vertex_triangle[if i + off >= n { i + off - n } else { i + off }])
+            vertex_triangle: self.vertex_triangle[off..]
+                .iter()
+                .chain(&self.vertex_triangle[..off])
+                .copied()
                 .collect(),
         }
     }
