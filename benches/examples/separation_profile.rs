@@ -7,8 +7,9 @@
 //! star in a C's pocket, the containing case), `spir` (two interlocked spiral arms), `istar` (two random stars
 //! pushed into each other), `saw` (saw-teeth tip to notch, the monotone sweep), `hook` (hooked
 //! saw-teeth tip to notch: facing chains not monotone, section 3), `dec` (the tied
-//! combs scaled by 0.1: decimal coordinates, whose ties the error-free stage cannot settle), and kernels any of `r` (Robust), `s` (Robust, section 3's matrices only), `f` (Fast) and `g` (geo's
-//! distance, once per run, for sizes its criterion series skips) (default `combs 131072 5 rf`).
+//! combs scaled by 0.1: decimal coordinates, whose ties the error-free stage cannot settle), and kernels any of `r` (Robust), `s` (Robust, section 3's matrices only), `f` (Fast), `g` (geo's
+//! distance, once per run, for sizes its criterion series skips) and `p` (parry2d-f64's build of both
+//! polylines and its query) (default `combs 131072 5 rf`).
 //! Figures only; the benchmarks are the reference.
 
 use glam::DVec2;
@@ -71,6 +72,22 @@ fn main() {
             let t = Instant::now();
             let d = Euclidean.distance(&gp, &gq);
             println!("{which} {n}: geo {:?} d={d}", t.elapsed());
+        }
+        if kern.contains('p') {
+            // parry2d-f64's build of both closed polylines (BVH) and its query, as the criterion
+            // series `parry_build_query` times them.
+            use parry2d_f64::math::{Pose, Vector};
+            use parry2d_f64::shape::Polyline;
+            let line = |c: &[DVec2]| {
+                let mut pts: Vec<Vector> = c.iter().map(|v| Vector::new(v.x, v.y)).collect();
+                pts.push(pts[0]);
+                Polyline::new(pts, None)
+            };
+            let t = Instant::now();
+            let (lp, lq) = (line(&a), line(&b));
+            let id = Pose::identity();
+            let d = parry2d_f64::query::distance(&id, &lp, &id, &lq).expect("supported");
+            println!("{which} {n}: parry build + query {:?} d={d}", t.elapsed());
         }
         if kern.contains('s') {
             // The disjoint-hull route with section 3's matrices only (the paper's algorithm).

@@ -8,6 +8,7 @@ use polydist_predicates::{Kernel, Sign, is_valid_coordinate};
 use crate::error::{Chain, SeparationError};
 use crate::frame::Frame;
 use crate::param::Param;
+use crate::site::Vertex;
 
 /// An edge of the envelope `P°` between two consecutive visible vertices: the chain's edge `(a, b)`
 /// oriented upward (`H(a) < H(b)`), of which only the part between the heights of the two visible
@@ -27,47 +28,128 @@ pub(crate) struct EnvEdge<V = DVec2> {
     pub(crate) hi: Param<V>,
 }
 
-/// A chain after Lemma 2: the perpendicularly visible vertices, strictly increasing in height, with
-/// their caller indices, and the envelope edge between each two consecutive ones.
-#[derive(Clone, Debug, Default)]
-pub(crate) struct Prepared<V = DVec2> {
-    pub(crate) pts: Vec<V>,
-    pub(crate) idx: Vec<usize>,
-    /// `edges[k]` carries the envelope between `pts[k]` and `pts[k + 1]`; `None` where no point of
-    /// the chain lies between their heights (a gap between the runs of a clipped chain: never for a
-    /// connected chain).
-    pub(crate) edges: Vec<Option<EnvEdge<V>>>,
+/// What a [`Prepared`] keeps of envelope interval `k` besides its edge's ends: the caller's
+/// indices, and whether the edge's part on the envelope ends at a shadow point at either height.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Carry {
+    /// The caller's indices of `a` and `b`.
+    pub(crate) ia: usize,
+    pub(crate) ib: usize,
+    /// The caller's edge index.
+    pub(crate) caller: usize,
+    /// `lo` is the shadow root at the lower visible vertex's height (else `Start`).
+    pub(crate) lo_root: bool,
+    /// `hi` is the shadow root at the upper visible vertex's height (else `End`).
+    pub(crate) hi_root: bool,
 }
 
-impl<V: Copy> Prepared<V> {
-    /// The real edge between heights `k` and `k + 1`: `(a, b, caller index of a, of b)`.
-    pub(crate) fn edge(&self, k: usize) -> Option<(V, V, usize, usize)> {
-        self.edges[k].as_ref().map(|e| (e.a, e.b, e.ia, e.ib))
+/// A chain after Lemma 2: the perpendicularly visible vertices, strictly increasing in height, with
+/// their caller indices, and the envelope edge between each two consecutive ones.
+///
+/// Interval `k` (between `pts[k]` and `pts[k + 1]`) is stored lean: the ends `(a, b)` of the edge
+/// carrying it in `segs[k]` (what the envelope sweep reads, borrowed as they are) and the rest in
+/// `carry[k]`; [`Prepared::env_edge`] builds the [`EnvEdge`] with its symbolic range for section
+/// 3's matrices. An [`EnvEdge`] holds two parameters of up to three points each, 112 bytes against
+/// these 64: the two envelopes of a disjoint-hull query are alive together, and their size is most
+/// of its peak memory (docs/algorithms/separation.md, "Memory").
+#[derive(Clone, Debug)]
+pub(crate) struct Prepared<V = DVec2> {
+    /// The frame the envelope was computed in (the shadow roots are heights in it).
+    pub(crate) frame: Frame,
+    pub(crate) pts: Vec<V>,
+    pub(crate) idx: Vec<usize>,
+    /// `segs[k]`: the edge `(a, b)` carrying the envelope between `pts[k]` and `pts[k + 1]`,
+    /// oriented upward; `(pts[k], pts[k + 1])` at a gap.
+    pub(crate) segs: Vec<(V, V)>,
+    /// `carry[k]`: `None` where no point of the chain lies between the two heights (a gap between
+    /// the runs of a clipped chain: never for a connected chain).
+    pub(crate) carry: Vec<Option<Carry>>,
+}
+
+impl<V: Vertex> Prepared<V> {
+    /// An empty envelope in `frame`, with room for `n` visible vertices.
+    pub(crate) fn with_capacity(frame: Frame, n: usize) -> Prepared<V> {
+        Prepared {
+            frame,
+            pts: Vec::with_capacity(n),
+            idx: Vec::with_capacity(n),
+            segs: Vec::with_capacity(n.saturating_sub(1)),
+            carry: Vec::with_capacity(n.saturating_sub(1)),
+        }
     }
 
+    /// The number of intervals (visible vertices minus one, or none).
+    pub(crate) fn intervals(&self) -> usize {
+        self.carry.len()
+    }
+
+    /// Whether some interval is a gap.
+    pub(crate) fn has_gaps(&self) -> bool {
+        self.carry.iter().any(Option::is_none)
+    }
+
+    /// The real edge between heights `k` and `k + 1`: `(a, b, caller index of a, of b)`.
+    pub(crate) fn edge(&self, k: usize) -> Option<(V, V, usize, usize)> {
+        let c = (*self.carry.get(k)?)?;
+        let (a, b) = self.segs[k];
+        Some((a, b, c.ia, c.ib))
+    }
+
+    /// Envelope interval `k` as an [`EnvEdge`]: a shadow end is the root of the height form of the
+    /// visible vertex at that height, kept symbolic.
+    pub(crate) fn env_edge(&self, k: usize) -> Option<EnvEdge<V>> {
+        let c = (*self.carry.get(k)?)?;
+        let (a, b) = self.segs[k];
+        let root = |v: V| Param::Root(self.frame.height_minus(v));
+        Some(EnvEdge {
+            a,
+            b,
+            ia: c.ia,
+            ib: c.ib,
+            caller: c.caller,
+            lo: if c.lo_root {
+                root(self.pts[k])
+            } else {
+                Param::Start
+            },
+            hi: if c.hi_root {
+                root(self.pts[k + 1])
+            } else {
+                Param::End
+            },
+        })
+    }
+
+    /// Every interval as [`Prepared::env_edge`] gives it.
+    pub(crate) fn env_edges(&self) -> Vec<Option<EnvEdge<V>>> {
+        (0..self.intervals()).map(|k| self.env_edge(k)).collect()
+    }
+}
+
+impl Prepared {
     /// A chain strictly increasing in height given as is (every vertex visible, each edge wholly
     /// on the envelope), for unit tests.
     #[cfg(test)]
     pub(crate) fn from_rising(pts: &[DVec2]) -> Prepared {
-        Prepared {
-            pts: pts.to_vec(),
-            idx: (0..pts.len()).collect(),
-            edges: pts
-                .windows(2)
-                .enumerate()
-                .map(|(k, w)| {
-                    Some(EnvEdge {
-                        a: w[0],
-                        b: w[1],
-                        ia: k,
-                        ib: k + 1,
-                        caller: k,
-                        lo: Param::Start,
-                        hi: Param::End,
-                    })
-                })
-                .collect(),
+        let frame = Frame {
+            l0: DVec2::ZERO,
+            l1: DVec2::Y,
+            mirror: false,
+        };
+        let mut out = Prepared::with_capacity(frame, pts.len());
+        out.pts.extend_from_slice(pts);
+        out.idx.extend(0..pts.len());
+        for (k, w) in pts.windows(2).enumerate() {
+            out.segs.push((w[0], w[1]));
+            out.carry.push(Some(Carry {
+                ia: k,
+                ib: k + 1,
+                caller: k,
+                lo_root: false,
+                hi_root: false,
+            }));
         }
+        out
     }
 }
 

@@ -128,7 +128,7 @@ impl<K: Kernel> CveMatrix<K> {
         let qq = prepare::<K, _>(q, frames.q, Chain::Q)?;
         let cols = apexes::<K, _>(&qq, frames.q);
         let ps = pieces::<K, _>(&pp, frames.p);
-        Ok(Self::build(frames.p, frames.q, pp.edges, ps, cols))
+        Ok(Self::build(frames.p, frames.q, pp.env_edges(), ps, cols))
     }
 }
 

@@ -46,10 +46,9 @@ use core::cmp::Ordering;
 use glam::DVec2;
 use polydist_predicates::{Kernel, Sign, is_valid_coordinate};
 
-use crate::chain::{EnvEdge, Prepared};
+use crate::chain::{Carry, Prepared};
 use crate::error::{Chain, SeparationError};
 use crate::frame::Frame;
-use crate::param::Param;
 use crate::site::Vertex;
 
 /// The nearest point of the chain at the height of a breakpoint.
@@ -514,11 +513,7 @@ fn to_prepared<K: Kernel, V: Vertex>(
     gapped: bool,
 ) -> Result<Prepared<V>, SeparationError> {
     let bps = env.bps;
-    let mut out = Prepared {
-        pts: Vec::with_capacity(bps.len()),
-        idx: Vec::with_capacity(bps.len()),
-        edges: Vec::with_capacity(bps.len().saturating_sub(1)),
-    };
+    let mut out = Prepared::with_capacity(c.frame, bps.len());
     for bp in bps {
         match bp.at {
             At::Vertex(w) => {
@@ -530,35 +525,29 @@ fn to_prepared<K: Kernel, V: Vertex>(
         }
     }
     // The last breakpoint's gap (`None`) is not an interval.
-    for pair in bps.windows(2) {
+    for (k, pair) in bps.windows(2).enumerate() {
         let Some(e) = pair[0].gap else {
             if gapped {
                 // No point of the runs between the two heights.
-                out.edges.push(None);
+                out.segs.push((out.pts[k], out.pts[k + 1]));
+                out.carry.push(None);
                 continue;
             }
             return Err(c.bad(pair[0].y, which));
         };
         let (a, b) = c.ends(e);
+        // A shadow end is the edge's point at the visible vertex's height (`pts[k]`, whose height
+        // is exactly that of the breakpoint's vertex): `Prepared::env_edge` keeps it symbolic.
         let (vk, vk1) = (pair[0].y, pair[1].y);
-        let lo = if a == vk || c.frame.cmp_height::<K, _>(c.v[a], c.v[vk]) == Ordering::Equal {
-            Param::Start
-        } else {
-            Param::Root(c.frame.height_minus(c.v[vk]))
-        };
-        let hi = if b == vk1 || c.frame.cmp_height::<K, _>(c.v[b], c.v[vk1]) == Ordering::Equal {
-            Param::End
-        } else {
-            Param::Root(c.frame.height_minus(c.v[vk1]))
-        };
-        out.edges.push(Some(EnvEdge {
-            a: c.v[a],
-            b: c.v[b],
+        let lo_root = a != vk && c.frame.cmp_height::<K, _>(c.v[a], c.v[vk]) != Ordering::Equal;
+        let hi_root = b != vk1 && c.frame.cmp_height::<K, _>(c.v[b], c.v[vk1]) != Ordering::Equal;
+        out.segs.push((c.v[a], c.v[b]));
+        out.carry.push(Some(Carry {
             ia: c.idx[a],
             ib: c.idx[b],
             caller: cl.edges[e].2,
-            lo,
-            hi,
+            lo_root,
+            hi_root,
         }));
     }
     Ok(out)
@@ -886,12 +875,18 @@ pub(crate) fn prepare<K: Kernel, V: Vertex>(
     if closed {
         cl.close_at_shortest(frame);
     }
+    // Each temporary is dropped as soon as it is read for the last time, so that the envelope
+    // built last can take its memory (docs/algorithms/separation.md, "Memory").
     let (lohi, sheared) = orient_edges::<K, V>(frame, &cl);
-    let s = Ctx::new(frame, &cl, &sheared, true);
     let c = Ctx::new(frame, &cl, &lohi, false);
-    let (nodes, edges) = scan::<K, V>(&s, m).map_err(|w| c.bad(w, which))?;
+    let (nodes, edges) = {
+        let s = Ctx::new(frame, &cl, &sheared, true);
+        scan::<K, V>(&s, m).map_err(|w| c.bad(w, which))?
+    };
+    drop(sheared);
     let mut level = Level::with_capacity(nodes.len() + 2);
     collapse::<K, V>(&c, &nodes, &edges, 0, &mut level);
+    drop((nodes, edges));
     if !closed {
         return to_prepared::<K, V>(&c, &cl, level.env(0), which, false);
     }
@@ -900,6 +895,7 @@ pub(crate) fn prepare<K: Kernel, V: Vertex>(
     leaf::<K, V>(&c, z, (u, w), &mut level);
     let mut out = Level::with_capacity(level.bps.len());
     merge_leaf::<K, V>(&c, level.env(0), level.env(1), &mut out).map_err(|w| c.bad(w, which))?;
+    drop(level);
     to_prepared::<K, V>(&c, &cl, out.env(0), which, false)
 }
 
@@ -1202,17 +1198,12 @@ fn public<K: Kernel>(
     };
     Ok(Envelope {
         vertices: prep.idx.clone(),
-        edges: prep.edges.iter().flatten().map(|e| e.caller).collect(),
+        edges: prep.carry.iter().flatten().map(|e| e.caller).collect(),
         shadows: prep
-            .edges
+            .carry
             .iter()
             .flatten()
-            .map(|e| {
-                (
-                    matches!(e.lo, Param::Root(_)),
-                    matches!(e.hi, Param::Root(_)),
-                )
-            })
+            .map(|e| (e.lo_root, e.hi_root))
             .collect(),
     })
 }

@@ -171,20 +171,20 @@ pub(crate) fn sweep_envelopes<K: Kernel>(
     frames: Frames,
     cut: f64,
 ) -> Option<(Cand, usize)> {
-    // Sized up front (collecting into an `Option` would grow it by doubling).
-    let segs = |c: &Prepared| -> Option<Vec<(DVec2, DVec2)>> {
-        let mut out = Vec::with_capacity(c.edges.len());
-        for e in &c.edges {
-            out.push(e.as_ref().map(|e| (e.a, e.b))?);
-        }
-        Some(out)
-    };
-    let (sp, sq) = (segs(pp)?, segs(qq)?);
+    if pp.has_gaps() || qq.has_gaps() {
+        return None;
+    }
     let (a, b) = (frames.p.l0, frames.p.l1);
     let (kp, kq, lens) = keys(&pp.pts, &qq.pts, a, b)?;
     let (cp, cq) = (
-        Carried { v: &pp.pts, e: &sp },
-        Carried { v: &qq.pts, e: &sq },
+        Carried {
+            v: &pp.pts,
+            e: &pp.segs,
+        },
+        Carried {
+            v: &qq.pts,
+            e: &qq.segs,
+        },
     );
     let n = pp.pts.len() + qq.pts.len();
     let (w, tried) = scan_windowed::<K, Carried<'_>>(
@@ -198,8 +198,18 @@ pub(crate) fn sweep_envelopes<K: Kernel>(
     )?;
     // Visible vertex `i` of `x` against envelope edge `k` of `y` (`P`'s edge when `p_side`).
     let ve = |x: &Prepared, i: usize, y: &Prepared, k: usize, p_side: bool| {
-        let e = y.edges.get(k)?.as_ref()?;
-        Some(Cand::on_edge(x.pts[i], x.idx[i], e, p_side))
+        let (a, b, ia, ib) = y.edge(k)?;
+        let caller = (*y.carry.get(k)?)?.caller;
+        Some(Cand::Ve {
+            v: x.pts[i],
+            j: x.idx[i],
+            a,
+            ia,
+            b,
+            ib,
+            edge: caller,
+            p_side,
+        })
     };
     let cand = match w.features() {
         (Feature::Vertex(i), Feature::Vertex(j)) => {

@@ -111,7 +111,7 @@ pub(crate) fn pieces<K: Kernel, V: Vertex>(prep: &Prepared<V>, frame: Frame) -> 
     let edge = |k: usize| prep.edge(k).map(|(a, b, _, _)| Edge { a, b });
     // The part of each edge on the envelope: a shadow point or hidden run vertex at either end is
     // at the height of the visible vertex and deeper.
-    let range = |k: usize| prep.edges[k].as_ref().map(|r| (r.lo, r.hi));
+    let range = |k: usize| prep.env_edge(k).map(|r| (r.lo, r.hi));
     // Upper spans per edge (ascending), from the top-to-bottom scan: edge `k`'s are
     // `upper[upper_at[k].0..upper_at[k].1]`. For the edge below vertex i, the hull pairs popped at
     // its bottom end are walked before vertex i pops: when that end is a hidden run vertex (deeper
@@ -568,14 +568,14 @@ mod tests {
                     let (a, b, _, _) = prep.edge(k).unwrap();
                     Edge { a, b }
                 };
-                for k in 0..prep.edges.len() {
-                    let r = prep.edges[k].as_ref().unwrap();
+                for k in 0..prep.intervals() {
+                    let r = prep.env_edge(k).unwrap();
                     shadows += usize::from(matches!(r.lo, Param::Root(_)))
                         + usize::from(matches!(r.hi, Param::Root(_)));
                 }
                 for pc in &ps {
                     let e = edge(pc.edge);
-                    let r = prep.edges[pc.edge].as_ref().unwrap();
+                    let r = prep.env_edge(pc.edge).unwrap();
                     assert_ne!(e.cmp::<Exact>(&pc.bot, &pc.top), Ordering::Greater);
                     assert_ne!(e.cmp::<Exact>(&r.lo, &pc.bot), Ordering::Greater);
                     assert_ne!(e.cmp::<Exact>(&pc.top, &r.hi), Ordering::Greater);
@@ -603,9 +603,9 @@ mod tests {
                     }
                 }
                 // Every sampled envelope point with α clearly ≥ 90° lies in some piece.
-                for k in 0..prep.edges.len() {
+                for k in 0..prep.intervals() {
                     let e = edge(k);
-                    let r = prep.edges[k].as_ref().unwrap();
+                    let r = prep.env_edge(k).unwrap();
                     let (t0, t1) = (approx(&e, &r.lo), approx(&e, &r.hi));
                     for s in 1..32 {
                         let t = ((t0 + (t1 - t0) * s as f64 / 32.0) * 1024.0).round() / 1024.0;

@@ -274,8 +274,8 @@ pub(crate) fn solve<K: Kernel, V: Vertex>(
 
 /// [`solve`] on envelopes already prepared (those of clipped chains may have gaps).
 pub(crate) fn solve_prepared<K: Kernel, V: Vertex>(
-    mut pp: Prepared<V>,
-    mut qq: Prepared<V>,
+    pp: Prepared<V>,
+    qq: Prepared<V>,
     frames: Frames,
     extra: Option<Cand<V>>,
 ) -> Result<(Cand<V>, SeparationStats), SeparationError> {
@@ -289,11 +289,10 @@ pub(crate) fn solve_prepared<K: Kernel, V: Vertex>(
     let p_pieces = pieces::<K, _>(&pp, frames.p);
     let q_pieces = pieces::<K, _>(&qq, frames.q);
     let stats_pieces = (p_pieces.len(), q_pieces.len());
-    // The matrices take the envelope edges over: nothing else reads them from here on.
-    let edges = core::mem::take(&mut pp.edges);
-    let m_pq = CveMatrix::<K, V>::build(frames.p, frames.q, edges, p_pieces, qa);
+    // The matrices take the envelope edges, their ranges made symbolic (`Prepared::env_edge`).
+    let m_pq = CveMatrix::<K, V>::build(frames.p, frames.q, pp.env_edges(), p_pieces, qa);
     let pe_qv = cve(&m_pq, true);
-    let edges = core::mem::take(&mut qq.edges);
+    let edges = qq.env_edges();
     let m_qp = CveMatrix::<K, V>::build(frames.q, frames.p, edges, q_pieces, pa);
     let qe_pv = cve(&m_qp, false);
     let mut best: Option<Cand<V>> = None;
