@@ -125,14 +125,26 @@ impl Level {
     }
 }
 
+/// How edge `e` of a chain, from position `e` to the next (`(e + 1) mod m` for a closed chain of
+/// `m`), runs along the line: one byte an edge where the ends themselves took 24.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Dir {
+    /// From lower to higher.
+    Up,
+    /// From higher to lower.
+    Down,
+    /// Perpendicular to the line (never under the scan's shear).
+    Flat,
+}
+
 /// A chain without repeated consecutive vertices, with its edges oriented upward.
 struct Ctx<'a, V> {
     frame: Frame,
     v: &'a [V],
     /// Caller index of each vertex.
     idx: &'a [usize],
-    /// Each edge's lower and upper vertex, `None` for an edge perpendicular to the line.
-    lohi: &'a [Option<(usize, usize)>],
+    /// Each edge's direction along the line ([`Ctx::ends`] orients it upward).
+    dirs: &'a [Dir],
     /// Heights compared lexicographically, (height, depth): the scan's symbolic shear (see
     /// [`scan`]), under which no two distinct points are at one height and no edge is
     /// perpendicular to the line.
@@ -144,12 +156,12 @@ struct Ctx<'a, V> {
 type Bad = usize;
 
 impl<'a, V: Vertex> Ctx<'a, V> {
-    fn new(frame: Frame, cl: &'a Clean<V>, lohi: &'a [Option<(usize, usize)>], lex: bool) -> Self {
+    fn new(frame: Frame, cl: &'a Clean<V>, dirs: &'a [Dir], lex: bool) -> Self {
         Ctx {
             frame,
             v: &cl.v,
             idx: &cl.idx,
-            lohi,
+            dirs,
             lex,
         }
     }
@@ -161,9 +173,21 @@ impl<'a, V: Vertex> Ctx<'a, V> {
         }
     }
 
+    /// Edge `e`'s lower and upper vertex; `None` for an edge perpendicular to the line.
+    #[inline]
+    fn lohi(&self, e: usize) -> Option<(usize, usize)> {
+        let (u, w) = (e, if e + 1 == self.v.len() { 0 } else { e + 1 });
+        match self.dirs[e] {
+            Dir::Up => Some((u, w)),
+            Dir::Down => Some((w, u)),
+            Dir::Flat => None,
+        }
+    }
+
+    #[inline]
     fn ends(&self, e: usize) -> (usize, usize) {
         // Only non-perpendicular edges enter envelopes.
-        self.lohi[e].unwrap_or((0, 0))
+        self.lohi(e).unwrap_or((0, 0))
     }
 
     /// Compares the heights of vertices `p` and `q` (lexicographically with their depths under
@@ -261,7 +285,7 @@ fn nearer<K: Kernel, V: Vertex>(c: &Ctx<'_, V>, x: At, y: At) -> Result<At, Bad>
 /// Appends the envelope of a single edge.
 fn leaf<K: Kernel, V: Vertex>(c: &Ctx<'_, V>, e: usize, ends: (usize, usize), out: &mut Level) {
     let start = out.bps.len();
-    match c.lohi[e] {
+    match c.lohi(e) {
         Some((a, b)) => {
             out.push(a, At::Vertex(a), Some(e));
             out.push(b, At::Vertex(b), None);
@@ -418,12 +442,14 @@ fn coalesce(out: &mut Level, start: usize) {
     bps.truncate(w);
 }
 
-/// A chain with repeated consecutive vertices dropped and a closing repeat removed.
+/// A chain with repeated consecutive vertices dropped and a closing repeat removed. Edge `e` joins
+/// positions `e` and `e + 1`, and for a closed chain the last one, `m − 1`, joins `m − 1` and 0.
 struct Clean<V> {
     v: Vec<V>,
     idx: Vec<usize>,
-    /// `(from, to, caller edge index)`.
-    edges: Vec<(usize, usize, usize)>,
+    /// The caller's index of each edge (as many as the vertices for a closed chain, one fewer
+    /// for an open one).
+    callers: Vec<usize>,
 }
 
 /// Drops repeated consecutive vertices; a chain whose last vertex equals its first (with at least
@@ -456,12 +482,12 @@ fn clean<V: Vertex>(chain: &[V], which: Chain) -> Result<Clean<V>, SeparationErr
     }
     let m = v.len();
     // Room for the closing edge too (a push past an exact-fit collect copies the whole vector).
-    let mut edges: Vec<(usize, usize, usize)> = Vec::with_capacity(m);
-    edges.extend((1..m).map(|k| (k - 1, k, idx[k] - 1)));
+    let mut callers: Vec<usize> = Vec::with_capacity(m);
+    callers.extend((1..m).map(|k| idx[k] - 1));
     if closed {
-        edges.push((m - 1, 0, closing));
+        callers.push(closing);
     }
-    Ok(Clean { v, idx, edges })
+    Ok(Clean { v, idx, callers })
 }
 
 impl<V: Vertex> Clean<V> {
@@ -496,11 +522,8 @@ impl<V: Vertex> Clean<V> {
         let shift = z + 1;
         self.v.rotate_left(shift);
         self.idx.rotate_left(shift);
-        let mut callers: Vec<usize> = self.edges.iter().map(|e| e.2).collect();
-        callers.rotate_left(shift);
-        for (k, (e, caller)) in self.edges.iter_mut().zip(callers).enumerate() {
-            *e = (k, (k + 1) % m, caller);
-        }
+        // Edge `k` keeps joining positions `k` and `k + 1` (mod `m`): only its caller moves.
+        self.callers.rotate_left(shift);
     }
 }
 
@@ -545,7 +568,7 @@ fn to_prepared<K: Kernel, V: Vertex>(
         out.carry.push(Some(Carry {
             ia: c.idx[a],
             ib: c.idx[b],
-            caller: cl.edges[e].2,
+            caller: cl.callers[e],
             lo_root,
             hi_root,
         }));
@@ -553,23 +576,22 @@ fn to_prepared<K: Kernel, V: Vertex>(
     Ok(out)
 }
 
-/// Each edge's lower and upper vertex: by true height (`None` for an edge perpendicular to the
-/// line), and under the scan's shear (a perpendicular edge then points away from the line). One
-/// height test per edge, a depth test only on the perpendicular ones.
-type Lohi = Vec<Option<(usize, usize)>>;
-
-fn orient_edges<K: Kernel, V: Vertex>(frame: Frame, cl: &Clean<V>) -> (Lohi, Lohi) {
-    cl.edges
-        .iter()
-        .map(|&(u, w, _)| {
-            let up = |o: Ordering| match o {
-                Ordering::Less => Some((u, w)),
-                Ordering::Greater => Some((w, u)),
-                Ordering::Equal => None,
+/// Each edge's direction: by true height (`Flat` for an edge perpendicular to the line), and under
+/// the scan's shear (a perpendicular edge then points away from the line). One height test per
+/// edge, a depth test only on the perpendicular ones.
+fn orient_edges<K: Kernel, V: Vertex>(frame: Frame, cl: &Clean<V>) -> (Vec<Dir>, Vec<Dir>) {
+    let m = cl.v.len();
+    (0..cl.callers.len())
+        .map(|e| {
+            let (u, w) = (cl.v[e], cl.v[if e + 1 == m { 0 } else { e + 1 }]);
+            let dir = |o: Ordering| match o {
+                Ordering::Less => Dir::Up,
+                Ordering::Greater => Dir::Down,
+                Ordering::Equal => Dir::Flat,
             };
-            match frame.cmp_height::<K, _>(cl.v[u], cl.v[w]) {
-                Ordering::Equal => (None, up(frame.cmp_depth::<K, _>(cl.v[u], cl.v[w]))),
-                o => (up(o), up(o)),
+            match frame.cmp_height::<K, _>(u, w) {
+                Ordering::Equal => (Dir::Flat, dir(frame.cmp_depth::<K, _>(u, w))),
+                o => (dir(o), dir(o)),
             }
         })
         .unzip()
@@ -871,14 +893,14 @@ pub(crate) fn prepare<K: Kernel, V: Vertex>(
     let mut cl = clean(chain, which)?;
     let m = cl.v.len();
     // A closed chain has as many edges as vertices, its closing edge (`m − 1` → 0) last.
-    let closed = m > 0 && cl.edges.len() == m;
+    let closed = m > 0 && cl.callers.len() == m;
     if closed {
         cl.close_at_shortest(frame);
     }
     // Each temporary is dropped as soon as it is read for the last time, so that the envelope
     // built last can take its memory (docs/algorithms/separation.md, "Memory").
-    let (lohi, sheared) = orient_edges::<K, V>(frame, &cl);
-    let c = Ctx::new(frame, &cl, &lohi, false);
+    let (dirs, sheared) = orient_edges::<K, V>(frame, &cl);
+    let c = Ctx::new(frame, &cl, &dirs, false);
     let (nodes, edges) = {
         let s = Ctx::new(frame, &cl, &sheared, true);
         scan::<K, V>(&s, m).map_err(|w| c.bad(w, which))?
@@ -891,8 +913,7 @@ pub(crate) fn prepare<K: Kernel, V: Vertex>(
         return to_prepared::<K, V>(&c, &cl, level.env(0), which, false);
     }
     let z = m - 1;
-    let (u, w, _) = cl.edges[z];
-    leaf::<K, V>(&c, z, (u, w), &mut level);
+    leaf::<K, V>(&c, z, (z, 0), &mut level);
     let mut out = Level::with_capacity(level.bps.len());
     merge_leaf::<K, V>(&c, level.env(0), level.env(1), &mut out).map_err(|w| c.bad(w, which))?;
     drop(level);
@@ -998,24 +1019,21 @@ pub(crate) fn prepare_runs<K: Kernel, V: Vertex>(
     let cl = Clean {
         v: chain.to_vec(),
         idx: (0..m).collect(),
-        edges: (1..m).map(|k| (k - 1, k, k - 1)).collect(),
+        callers: (0..m.saturating_sub(1)).collect(),
     };
-    let (lohi, sheared) = orient_edges::<K, V>(frame, &cl);
-    let c = Ctx::new(frame, &cl, &lohi, false);
+    let (dirs, sheared) = orient_edges::<K, V>(frame, &cl);
+    let c = Ctx::new(frame, &cl, &dirs, false);
     let mut level = Level::with_capacity(m + 2);
-    let mut local: Vec<Option<(usize, usize)>> = Vec::new();
     for &(s, t) in runs {
         if s > t || t >= m {
             return Err(SeparationError::Inconsistent);
         }
-        // The run's own walk, in its own positions.
-        local.clear();
-        local.extend(sheared[s..t].iter().map(|x| x.map(|(u, w)| (u - s, w - s))));
+        // The run's own walk, in its own positions (directions do not depend on them).
         let sc = Ctx {
             frame,
             v: &cl.v[s..=t],
             idx: &cl.idx[s..=t],
-            lohi: &local,
+            dirs: &sheared[s..t],
             lex: true,
         };
         let (nodes, edges) = scan::<K, V>(&sc, t + 1 - s).map_err(|w| c.bad(w + s, which))?;
@@ -1052,8 +1070,8 @@ pub(crate) fn prepare_brute<K: Kernel, V: Vertex>(
     which: Chain,
 ) -> Result<Prepared<V>, SeparationError> {
     let cl = clean(chain, which)?;
-    let (lohi, _) = orient_edges::<K, V>(frame, &cl);
-    let c = Ctx::new(frame, &cl, &lohi, false);
+    let (dirs, _) = orient_edges::<K, V>(frame, &cl);
+    let c = Ctx::new(frame, &cl, &dirs, false);
     let m = cl.v.len();
     // Distinct heights, each given by its first vertex, in increasing order (insertion sort by
     // exact comparisons: O(n²)).
@@ -1069,7 +1087,7 @@ pub(crate) fn prepare_brute<K: Kernel, V: Vertex>(
         }
     }
     let spans = |e: usize, y: usize, strict_top: bool| {
-        lohi[e].is_some_and(|(a, b)| {
+        c.lohi(e).is_some_and(|(a, b)| {
             frame.cmp_height::<K, _>(cl.v[a], cl.v[y]) == Ordering::Less
                 && if strict_top {
                     frame.cmp_height::<K, _>(cl.v[b], cl.v[y]) == Ordering::Greater
@@ -1090,7 +1108,7 @@ pub(crate) fn prepare_brute<K: Kernel, V: Vertex>(
                 });
             }
         }
-        for e in 0..cl.edges.len() {
+        for e in 0..cl.callers.len() {
             if spans(e, h, true) {
                 best = Some(match best {
                     None => At::Edge(e),
@@ -1102,8 +1120,8 @@ pub(crate) fn prepare_brute<K: Kernel, V: Vertex>(
         let gap = if k + 1 < hs.len() {
             // Edges spanning the slab above h: bottom at or below h, top above h.
             let mut g: Option<usize> = None;
-            for (e, ends) in lohi.iter().enumerate() {
-                let Some((a, b)) = *ends else { continue };
+            for e in 0..cl.callers.len() {
+                let Some((a, b)) = c.lohi(e) else { continue };
                 if frame.cmp_height::<K, _>(cl.v[a], cl.v[h]) != Ordering::Greater
                     && frame.cmp_height::<K, _>(cl.v[b], cl.v[h]) == Ordering::Greater
                 {
