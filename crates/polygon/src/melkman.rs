@@ -14,6 +14,8 @@
 //! vertex, and popping collinear vertices keeps the hull strictly convex. Both loops keep at least two
 //! deque entries, so an inconsistent kernel (Fast) cannot empty the deque or index out of range.
 
+use std::collections::VecDeque;
+
 use glam::DVec2;
 use polydist_predicates::{Kernel, Orientation};
 
@@ -23,55 +25,54 @@ use crate::ring::lowest;
 /// consecutive collinear), as indices into `v`: counter-clockwise, strictly convex, starting at the
 /// lexicographically lowest and increasing cyclically.
 pub(crate) fn hull<K: Kernel>(v: &[DVec2]) -> Vec<usize> {
-    let n = v.len();
     let ccw = |a: DVec2, b: DVec2, c: DVec2| K::orient(a, b, c) == Orientation::CounterClockwise;
-    // The deque lives in `d[bot..=top]` of a buffer of `2n + 1` slots, started in the middle: each
-    // vertex pushes at most once on each end, so neither end leaves the buffer. `d` holds indices,
-    // `pts` the same vertices' points (the tests read only these).
-    let mut d = vec![0usize; 2 * n + 1];
-    let mut pts = vec![DVec2::ZERO; 2 * n + 1];
-    let (mut bot, mut top) = (n - 2, n + 1);
+    // The deque holds each vertex's index with its point (the tests read only the points). It
+    // grows with the hull, not with `n`: a buffer of `2n + 1` slots started in the middle, as we
+    // had it, was zeroed whole (three words a vertex) for a hull that is often a handful of
+    // vertices, and its pages faulted in at every call.
+    let mut d: VecDeque<(usize, DVec2)> = VecDeque::with_capacity(16);
     let first = if ccw(v[0], v[1], v[2]) {
         [2, 0, 1, 2]
     } else {
         [2, 1, 0, 2]
     };
-    for (k, &i) in first.iter().enumerate() {
-        d[bot + k] = i;
-        pts[bot + k] = v[i];
-    }
+    d.extend(first.iter().map(|&i| (i, v[i])));
     for (i, &p) in v.iter().enumerate().skip(3) {
         // Inside or on the hull: not strictly right of the top edge nor of the bottom edge. The two
         // turns tested are the first ones the pops below test (the top pops leave the bottom
         // edge alone, and a turn is the same read from any of its three points), so they are
-        // kept, not asked again.
-        let mut at_top = Some(K::orient(pts[top - 1], pts[top], p));
+        // kept, not asked again. The deque has at least three entries here and at least two
+        // wherever it is read below (both loops stop at two; each push makes three).
+        let top = |d: &VecDeque<(usize, DVec2)>| (d[d.len() - 2].1, d[d.len() - 1].1);
+        let bot = |d: &VecDeque<(usize, DVec2)>| (d[0].1, d[1].1);
+        let (a, b) = top(&d);
+        let mut at_top = Some(K::orient(a, b, p));
         let mut at_bot = None;
         if at_top != Some(Orientation::Clockwise) {
-            let o = K::orient(pts[bot], pts[bot + 1], p);
+            let (a, b) = bot(&d);
+            let o = K::orient(a, b, p);
             if o != Orientation::Clockwise {
                 continue;
             }
             at_bot = Some(o);
         }
-        let ccw_or = |known: &mut Option<Orientation>, a: DVec2, b: DVec2| {
+        let ccw_or = |known: &mut Option<Orientation>, (a, b): (DVec2, DVec2)| {
             known.take().unwrap_or_else(|| K::orient(a, b, p)) == Orientation::CounterClockwise
         };
-        while top - bot > 1 && !ccw_or(&mut at_top, pts[top - 1], pts[top]) {
-            top -= 1;
+        while d.len() > 2 && !ccw_or(&mut at_top, top(&d)) {
+            d.pop_back();
         }
-        top += 1;
-        d[top] = i;
-        pts[top] = p;
-        // The bottom edge d[bot] → d[bot + 1] must turn strictly left from p → d[bot].
-        while top - bot > 1 && !ccw_or(&mut at_bot, pts[bot], pts[bot + 1]) {
-            bot += 1;
+        d.push_back((i, p));
+        // The bottom edge d[0] → d[1] must turn strictly left from p → d[0].
+        while d.len() > 2 && !ccw_or(&mut at_bot, bot(&d)) {
+            d.pop_front();
         }
-        bot -= 1;
-        d[bot] = i;
-        pts[bot] = p;
+        d.push_front((i, p));
     }
-    let mut hull = d[bot..top].to_vec();
-    hull.rotate_left(lowest(&pts[bot..top]));
+    // Both ends hold the vertex added last: drop one.
+    d.pop_back();
+    let pts: Vec<DVec2> = d.iter().map(|x| x.1).collect();
+    let mut hull: Vec<usize> = d.iter().map(|x| x.0).collect();
+    hull.rotate_left(lowest(&pts));
     hull
 }
