@@ -95,28 +95,37 @@ impl<V: Vertex> Prepared<V> {
         Some((a, b, c.ia, c.ib))
     }
 
-    /// Envelope interval `k` as an [`EnvEdge`]: a shadow end is the root of the height form of the
-    /// visible vertex at that height, kept symbolic.
+    /// The part of interval `k`'s edge on the envelope, `lo..hi` on `(a, b)`: a shadow end is the
+    /// root of the height form of the visible vertex at that height, kept symbolic.
+    pub(crate) fn range(&self, k: usize) -> Option<(Param<V>, Param<V>)> {
+        let c = (*self.carry.get(k)?)?;
+        let root = |v: V| Param::Root(self.frame.height_minus(v));
+        let lo = if c.lo_root {
+            root(self.pts[k])
+        } else {
+            Param::Start
+        };
+        let hi = if c.hi_root {
+            root(self.pts[k + 1])
+        } else {
+            Param::End
+        };
+        Some((lo, hi))
+    }
+
+    /// Envelope interval `k` as an [`EnvEdge`], its range from [`Prepared::range`].
     pub(crate) fn env_edge(&self, k: usize) -> Option<EnvEdge<V>> {
         let c = (*self.carry.get(k)?)?;
         let (a, b) = self.segs[k];
-        let root = |v: V| Param::Root(self.frame.height_minus(v));
+        let (lo, hi) = self.range(k)?;
         Some(EnvEdge {
             a,
             b,
             ia: c.ia,
             ib: c.ib,
             caller: c.caller,
-            lo: if c.lo_root {
-                root(self.pts[k])
-            } else {
-                Param::Start
-            },
-            hi: if c.hi_root {
-                root(self.pts[k + 1])
-            } else {
-                Param::End
-            },
+            lo,
+            hi,
         })
     }
 

@@ -198,18 +198,8 @@ pub(crate) fn sweep_envelopes<K: Kernel>(
     )?;
     // Visible vertex `i` of `x` against envelope edge `k` of `y` (`P`'s edge when `p_side`).
     let ve = |x: &Prepared, i: usize, y: &Prepared, k: usize, p_side: bool| {
-        let (a, b, ia, ib) = y.edge(k)?;
-        let caller = (*y.carry.get(k)?)?.caller;
-        Some(Cand::Ve {
-            v: x.pts[i],
-            j: x.idx[i],
-            a,
-            ia,
-            b,
-            ib,
-            edge: caller,
-            p_side,
-        })
+        let e = y.env_edge(k)?;
+        Some(Cand::on_edge(x.pts[i], x.idx[i], &e, p_side))
     };
     let cand = match w.features() {
         (Feature::Vertex(i), Feature::Vertex(j)) => {

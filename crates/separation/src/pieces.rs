@@ -111,7 +111,7 @@ pub(crate) fn pieces<K: Kernel, V: Vertex>(prep: &Prepared<V>, frame: Frame) -> 
     let edge = |k: usize| prep.edge(k).map(|(a, b, _, _)| Edge { a, b });
     // The part of each edge on the envelope: a shadow point or hidden run vertex at either end is
     // at the height of the visible vertex and deeper.
-    let range = |k: usize| prep.env_edge(k).map(|r| (r.lo, r.hi));
+    let range = |k: usize| prep.range(k);
     // Upper spans per edge (ascending), from the top-to-bottom scan: edge `k`'s are
     // `upper[upper_at[k].0..upper_at[k].1]`. For the edge below vertex i, the hull pairs popped at
     // its bottom end are walked before vertex i pops: when that end is a hidden run vertex (deeper

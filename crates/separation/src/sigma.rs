@@ -292,8 +292,7 @@ pub(crate) fn solve_prepared<K: Kernel, V: Vertex>(
     // The matrices take the envelope edges, their ranges made symbolic (`Prepared::env_edge`).
     let m_pq = CveMatrix::<K, V>::build(frames.p, frames.q, pp.env_edges(), p_pieces, qa);
     let pe_qv = cve(&m_pq, true);
-    let edges = qq.env_edges();
-    let m_qp = CveMatrix::<K, V>::build(frames.q, frames.p, edges, q_pieces, pa);
+    let m_qp = CveMatrix::<K, V>::build(frames.q, frames.p, qq.env_edges(), q_pieces, pa);
     let qe_pv = cve(&m_qp, false);
     let mut best: Option<Cand<V>> = None;
     for c in [vv, pe_qv, qe_pv, extra].into_iter().flatten() {
