@@ -72,8 +72,13 @@ struct Pocket {
     lo: usize,
     len: usize,
     /// Its ring (counter-clockwise) and triangulation, built on first use; `None` if that failed.
-    tri: OnceCell<Option<(Vec<DVec2>, Triangulation)>>,
+    tri: OnceCell<Option<Box<Triangulated>>>,
 }
+
+/// An entered pocket's ring and triangulation. Boxed in [`Pocket`]: most pockets are never
+/// entered, and the list of them is written whole at every query (a star's valleys: 8,000 of
+/// them), 32 bytes each instead of 112 (docs/algorithms/separation.md, "Memory").
+type Triangulated = (Vec<DVec2>, Triangulation);
 
 /// The region with its unentered pockets cut off, and how to read the reduced region's answers
 /// on the full ring.
@@ -416,9 +421,9 @@ impl Pruned<'_> {
             .get_or_init(|| {
                 let ring: Vec<DVec2> = (0..pk.len).map(|k| self.full[(pk.lo + k) % n]).collect();
                 let tri = triangulate::<K>(&ring).ok()?;
-                Some((ring, tri))
+                Some(Box::new((ring, tri)))
             })
-            .as_ref()
+            .as_deref()
             .map(|(ring, tri)| (ring.as_slice(), tri))
     }
 
