@@ -37,14 +37,15 @@ pub(crate) fn hull<K: Kernel>(v: &[DVec2]) -> Vec<usize> {
         [2, 1, 0, 2]
     };
     d.extend(first.iter().map(|&i| (i, v[i])));
+    // The points of the top edge (the last two entries) and of the bottom edge (the first two).
+    let top = |d: &VecDeque<(usize, DVec2)>| (d[d.len() - 2].1, d[d.len() - 1].1);
+    let bot = |d: &VecDeque<(usize, DVec2)>| (d[0].1, d[1].1);
     for (i, &p) in v.iter().enumerate().skip(3) {
         // Inside or on the hull: not strictly right of the top edge nor of the bottom edge. The two
         // turns tested are the first ones the pops below test (the top pops leave the bottom
         // edge alone, and a turn is the same read from any of its three points), so they are
         // kept, not asked again. The deque has at least three entries here and at least two
         // wherever it is read below (both loops stop at two; each push makes three).
-        let top = |d: &VecDeque<(usize, DVec2)>| (d[d.len() - 2].1, d[d.len() - 1].1);
-        let bot = |d: &VecDeque<(usize, DVec2)>| (d[0].1, d[1].1);
         let (a, b) = top(&d);
         let mut at_top = Some(K::orient(a, b, p));
         let mut at_bot = None;

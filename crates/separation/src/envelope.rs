@@ -137,6 +137,13 @@ enum Dir {
     Flat,
 }
 
+/// The positions edge `e` of a chain of `m` vertices joins: `e` and the next, `e + 1` or, for the
+/// closing edge of a closed chain, 0 ([`Clean`]).
+#[inline]
+fn edge_ends(e: usize, m: usize) -> (usize, usize) {
+    (e, if e + 1 == m { 0 } else { e + 1 })
+}
+
 /// A chain without repeated consecutive vertices, with its edges oriented upward.
 struct Ctx<'a, V> {
     frame: Frame,
@@ -176,7 +183,7 @@ impl<'a, V: Vertex> Ctx<'a, V> {
     /// Edge `e`'s lower and upper vertex; `None` for an edge perpendicular to the line.
     #[inline]
     fn lohi(&self, e: usize) -> Option<(usize, usize)> {
-        let (u, w) = (e, if e + 1 == self.v.len() { 0 } else { e + 1 });
+        let (u, w) = edge_ends(e, self.v.len());
         match self.dirs[e] {
             Dir::Up => Some((u, w)),
             Dir::Down => Some((w, u)),
@@ -583,7 +590,8 @@ fn orient_edges<K: Kernel, V: Vertex>(frame: Frame, cl: &Clean<V>) -> (Vec<Dir>,
     let m = cl.v.len();
     (0..cl.callers.len())
         .map(|e| {
-            let (u, w) = (cl.v[e], cl.v[if e + 1 == m { 0 } else { e + 1 }]);
+            let (u, w) = edge_ends(e, m);
+            let (u, w) = (cl.v[u], cl.v[w]);
             let dir = |o: Ordering| match o {
                 Ordering::Less => Dir::Up,
                 Ordering::Greater => Dir::Down,
@@ -913,7 +921,7 @@ pub(crate) fn prepare<K: Kernel, V: Vertex>(
         return to_prepared::<K, V>(&c, &cl, level.env(0), which, false);
     }
     let z = m - 1;
-    leaf::<K, V>(&c, z, (z, 0), &mut level);
+    leaf::<K, V>(&c, z, edge_ends(z, m), &mut level);
     let mut out = Level::with_capacity(level.bps.len());
     merge_leaf::<K, V>(&c, level.env(0), level.env(1), &mut out).map_err(|w| c.bad(w, which))?;
     drop(level);
