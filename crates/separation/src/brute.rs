@@ -330,15 +330,20 @@ impl Winner {
 /// projects strictly inside the edge (otherwise a vertex pair has its distance and comes first in
 /// the scan's order, so it never wins).
 fn admitted<K: Kernel, C: Points + ?Sized>(c: Cand, p: &C, q: &C, interior_only: bool) -> bool {
-    let inside = |v: DVec2, (a, b): (DVec2, DVec2)| {
-        K::dot_sign(a, v, a, b) == Sign::Positive && K::dot_sign(b, v, b, a) == Sign::Positive
-    };
+    let inside = |v: DVec2, (a, b): (DVec2, DVec2)| foot_inside::<K>(v, a, b);
     !interior_only
         || match c {
             Cand::Vv(..) => true,
             Cand::PvQe(i, j) => inside(p.at(i), q.seg(j)),
             Cand::QvPe(j, i) => inside(q.at(j), p.seg(i)),
         }
+}
+
+/// Whether the foot of `v` on the line through `a` and `b` lies strictly inside the segment: two
+/// exact dot signs.
+#[inline]
+fn foot_inside<K: Kernel>(v: DVec2, a: DVec2, b: DVec2) -> bool {
+    K::dot_sign(a, v, a, b) == Sign::Positive && K::dot_sign(b, v, b, a) == Sign::Positive
 }
 
 /// [`Kernel::cmp_dist2`] for the scans, with a shortcut under the exact kernels for the two
@@ -469,29 +474,36 @@ const BOUNDS_SLACK: f64 = 4.0 * BOUNDS_U;
 /// the bound gives up (`lo = 0`, or `(0, ∞)`), so an underflowed product (at most `2⁻¹⁰⁷⁴` off) is
 /// inside the `64u²` slack. Non-finite values give `(0, ∞)`.
 fn bounds<C: Points + ?Sized>(c: Cand, p: &C, q: &C) -> (f64, f64) {
-    let give_up = (0.0, f64::INFINITY);
-    // `|d|²` for a difference vector `d` of rounded coordinate differences.
-    let squared = |d: DVec2| {
-        let sq = d.x * d.x + d.y * d.y;
-        let e = BOUNDS_ERR * sq;
-        let (lo, hi) = (sq - (e + e), sq + (e + e));
-        if sq.is_finite() && lo >= BOUNDS_TINY {
-            (lo, hi)
-        } else {
-            give_up
-        }
-    };
-    let (v, s, t) = match c {
-        Cand::Vv(i, j) => return squared(p.at(i) - q.at(j)),
+    match c {
+        Cand::Vv(i, j) => squared_bounds(p.at(i) - q.at(j)),
         Cand::PvQe(i, j) => {
             let (s, t) = q.seg(j);
-            (p.at(i), s, t)
+            edge_bounds(p.at(i), s, t)
         }
         Cand::QvPe(j, i) => {
             let (s, t) = p.seg(i);
-            (q.at(j), s, t)
+            edge_bounds(q.at(j), s, t)
         }
-    };
+    }
+}
+
+/// [`bounds`] for a point pair: those of `|d|²` for the rounded difference vector `d`.
+#[inline]
+fn squared_bounds(d: DVec2) -> (f64, f64) {
+    let sq = d.x * d.x + d.y * d.y;
+    let e = BOUNDS_ERR * sq;
+    let (lo, hi) = (sq - (e + e), sq + (e + e));
+    if sq.is_finite() && lo >= BOUNDS_TINY {
+        (lo, hi)
+    } else {
+        (0.0, f64::INFINITY)
+    }
+}
+
+/// [`bounds`] for the point `v` and the edge from `s` to `t`: those of the distance to its line.
+#[inline]
+fn edge_bounds(v: DVec2, s: DVec2, t: DVec2) -> (f64, f64) {
+    let (give_up, squared) = ((0.0, f64::INFINITY), squared_bounds);
     // A vertical or horizontal edge: the squared distance to its line is that of one coordinate
     // difference (rectilinear input: comb teeth), bounded as a point pair's.
     if s.x == t.x && s.y != t.y {
@@ -1153,15 +1165,53 @@ impl<'a, K: Kernel, const INTERIOR_ONLY: bool, C: Points + ?Sized> Best<'a, K, I
         self.b.1.min(self.cut)
     }
 
+    /// The bounds of `c` ([`Cand::scan_bounds`]) unless it is skipped: when its lower bound is
+    /// strictly above the best's upper bound or the cut, or when it is not [`admitted`]. Either
+    /// test may come first (both are certain); the cheaper one does. The bounds of a point pair or
+    /// of a horizontal or vertical edge are a subtraction and a square, cheaper than `admitted`'s
+    /// two dot signs; the others cost two divisions, and on a star's tips facing a curved wall most
+    /// candidates fail `admitted` (their edges' lines pass near the tip, the feet outside).
+    #[inline(always)]
+    fn filter(&self, c: Cand) -> Option<(f64, f64)> {
+        if !INTERIOR_ONLY {
+            return Some((0.0, f64::INFINITY));
+        }
+        // Neither a lower bound nor `u2` is ever NaN (the bounds give up to `(0, ∞)`), so
+        // `lo <= u2` is "not strictly above the best or the cut".
+        let u2 = self.u2();
+        let (v, s, t) = match c {
+            Cand::Vv(i, j) => {
+                let b = squared_bounds(self.p.at(i) - self.q.at(j));
+                return (b.0 <= u2).then_some(b);
+            }
+            Cand::PvQe(i, j) => {
+                let (s, t) = self.q.seg(j);
+                (self.p.at(i), s, t)
+            }
+            Cand::QvPe(j, i) => {
+                let (s, t) = self.p.seg(i);
+                (self.q.at(j), s, t)
+            }
+        };
+        if s.x == t.x || s.y == t.y {
+            let b = edge_bounds(v, s, t);
+            (b.0 <= u2 && foot_inside::<K>(v, s, t)).then_some(b)
+        } else if foot_inside::<K>(v, s, t) {
+            let b = edge_bounds(v, s, t);
+            (b.0 <= u2).then_some(b)
+        } else {
+            None
+        }
+    }
+
     /// Takes `c` when it is nearer than the best: skipped when bounded strictly above the best or
     /// the cut, taken when bounded strictly below the best, compared exactly otherwise.
-    #[inline]
+    #[inline(always)]
     fn consider(&mut self, c: Cand) {
         let (p, q, interior_only) = (self.p, self.q, INTERIOR_ONLY);
-        let b = c.scan_bounds(p, q, interior_only);
-        if b.0 > self.b.1 || b.0 > self.cut || !admitted::<K, _>(c, p, q, interior_only) {
+        let Some(b) = self.filter(c) else {
             return;
-        }
+        };
         let d = c.scan_dist(p, q, interior_only);
         if b.1 < self.b.0 || cmp_scan::<K>(d, self.d) == Ordering::Less {
             self.best = c;
