@@ -326,17 +326,52 @@ impl Winner {
     }
 }
 
-/// Whether the vertex–edge candidate `c` is taken: always, or with `interior_only` when its vertex
-/// projects strictly inside the edge (otherwise a vertex pair has its distance and comes first in
-/// the scan's order, so it never wins).
-fn admitted<K: Kernel, C: Points + ?Sized>(c: Cand, p: &C, q: &C, interior_only: bool) -> bool {
-    let inside = |v: DVec2, (a, b): (DVec2, DVec2)| foot_inside::<K>(v, a, b);
-    !interior_only
-        || match c {
-            Cand::Vv(..) => true,
-            Cand::PvQe(i, j) => inside(p.at(i), q.seg(j)),
-            Cand::QvPe(j, i) => inside(q.at(j), p.seg(i)),
+/// The bounds of `c` ([`Cand::scan_bounds`]) unless a scan skips it: with `interior_only`, when its
+/// lower bound is strictly above `u2` (the best's upper bound or the cut, whichever is smaller), or
+/// when it is a vertex–edge pair whose vertex does not project strictly inside the edge (a vertex
+/// pair then has its distance and comes first in the scan's order, so it never wins). Without
+/// `interior_only` every candidate is kept, with no bounds (`(0, ∞)`).
+///
+/// Either test may come first (both are certain); the cheaper one does. The bounds of a point pair
+/// or of a horizontal or vertical edge are a subtraction and a square, cheaper than the foot test's
+/// two dot signs; the others cost two divisions, and on a star's tips facing a curved wall most
+/// candidates fail the foot test (their edges' lines pass near the tip, the feet outside).
+#[inline(always)]
+fn filter<K: Kernel, C: Points + ?Sized>(
+    c: Cand,
+    p: &C,
+    q: &C,
+    interior_only: bool,
+    u2: f64,
+) -> Option<(f64, f64)> {
+    if !interior_only {
+        return Some((0.0, f64::INFINITY));
+    }
+    // Neither a lower bound nor `u2` is ever NaN (the bounds give up to `(0, ∞)`), so `lo <= u2`
+    // is "not strictly above the best or the cut".
+    let (v, s, t) = match c {
+        Cand::Vv(i, j) => {
+            let b = squared_bounds(p.at(i) - q.at(j));
+            return (b.0 <= u2).then_some(b);
         }
+        Cand::PvQe(i, j) => {
+            let (s, t) = q.seg(j);
+            (p.at(i), s, t)
+        }
+        Cand::QvPe(j, i) => {
+            let (s, t) = p.seg(i);
+            (q.at(j), s, t)
+        }
+    };
+    if s.x == t.x || s.y == t.y {
+        let b = edge_bounds(v, s, t);
+        (b.0 <= u2 && foot_inside::<K>(v, s, t)).then_some(b)
+    } else if foot_inside::<K>(v, s, t) {
+        let b = edge_bounds(v, s, t);
+        (b.0 <= u2).then_some(b)
+    } else {
+        None
+    }
 }
 
 /// Whether the foot of `v` on the line through `a` and `b` lies strictly inside the segment: two
@@ -503,17 +538,16 @@ fn squared_bounds(d: DVec2) -> (f64, f64) {
 /// [`bounds`] for the point `v` and the edge from `s` to `t`: those of the distance to its line.
 #[inline]
 fn edge_bounds(v: DVec2, s: DVec2, t: DVec2) -> (f64, f64) {
-    let (give_up, squared) = ((0.0, f64::INFINITY), squared_bounds);
     // A vertical or horizontal edge: the squared distance to its line is that of one coordinate
     // difference (rectilinear input: comb teeth), bounded as a point pair's.
     if s.x == t.x && s.y != t.y {
-        return squared(DVec2::new(v.x - s.x, 0.0));
+        return squared_bounds(DVec2::new(v.x - s.x, 0.0));
     }
     if s.y == t.y && s.x != t.x {
-        return squared(DVec2::new(0.0, v.y - s.y));
+        return squared_bounds(DVec2::new(0.0, v.y - s.y));
     }
     let (e, w) = (t - s, v - s);
-    quotient_bounds(e.x * w.y, e.y * w.x, e).map_or(give_up, |(lo, hi, _)| (lo, hi))
+    quotient_bounds(e.x * w.y, e.y * w.x, e).map_or((0.0, f64::INFINITY), |(lo, hi, _)| (lo, hi))
 }
 
 /// Bounds `lo ≤ (t₁ − t₂)²/|e|² ≤ hi` for products `t₁`, `t₂` of rounded coordinate differences
@@ -862,10 +896,9 @@ fn scan_pruned_best<K: Kernel>(
     // `cut`) are skipped and candidates bounded strictly below it are taken.
     let best_b = core::cell::Cell::new(best.scan_bounds(p, q, interior_only));
     let consider = |c: Cand, best: &mut Cand, best_d: &mut Dist2| {
-        let b = c.scan_bounds(p, q, interior_only);
-        if b.0 > best_b.get().1 || b.0 > cut || !admitted::<K, _>(c, p, q, interior_only) {
+        let Some(b) = filter::<K, _>(c, p, q, interior_only, cut.min(best_b.get().1)) else {
             return;
-        }
+        };
         let d = dist(c);
         let order = if b.1 < best_b.get().0 {
             Ordering::Less
@@ -1165,43 +1198,10 @@ impl<'a, K: Kernel, const INTERIOR_ONLY: bool, C: Points + ?Sized> Best<'a, K, I
         self.b.1.min(self.cut)
     }
 
-    /// The bounds of `c` ([`Cand::scan_bounds`]) unless it is skipped: when its lower bound is
-    /// strictly above the best's upper bound or the cut, or when it is not [`admitted`]. Either
-    /// test may come first (both are certain); the cheaper one does. The bounds of a point pair or
-    /// of a horizontal or vertical edge are a subtraction and a square, cheaper than `admitted`'s
-    /// two dot signs; the others cost two divisions, and on a star's tips facing a curved wall most
-    /// candidates fail `admitted` (their edges' lines pass near the tip, the feet outside).
+    /// [`filter`] with the scan's `INTERIOR_ONLY` and [`Best::u2`].
     #[inline(always)]
     fn filter(&self, c: Cand) -> Option<(f64, f64)> {
-        if !INTERIOR_ONLY {
-            return Some((0.0, f64::INFINITY));
-        }
-        // Neither a lower bound nor `u2` is ever NaN (the bounds give up to `(0, ∞)`), so
-        // `lo <= u2` is "not strictly above the best or the cut".
-        let u2 = self.u2();
-        let (v, s, t) = match c {
-            Cand::Vv(i, j) => {
-                let b = squared_bounds(self.p.at(i) - self.q.at(j));
-                return (b.0 <= u2).then_some(b);
-            }
-            Cand::PvQe(i, j) => {
-                let (s, t) = self.q.seg(j);
-                (self.p.at(i), s, t)
-            }
-            Cand::QvPe(j, i) => {
-                let (s, t) = self.p.seg(i);
-                (self.q.at(j), s, t)
-            }
-        };
-        if s.x == t.x || s.y == t.y {
-            let b = edge_bounds(v, s, t);
-            (b.0 <= u2 && foot_inside::<K>(v, s, t)).then_some(b)
-        } else if foot_inside::<K>(v, s, t) {
-            let b = edge_bounds(v, s, t);
-            (b.0 <= u2).then_some(b)
-        } else {
-            None
-        }
+        filter::<K, C>(c, self.p, self.q, INTERIOR_ONLY, self.u2())
     }
 
     /// Takes `c` when it is nearer than the best: skipped when bounded strictly above the best or
