@@ -303,7 +303,11 @@ impl Lens {
     /// subtraction of `4E`: the result is at most the exact gap less `E`.
     #[inline]
     pub(crate) fn gap(&self, x: (f64, f64), y: (f64, f64)) -> f64 {
-        let g = (y.0 - x.1).max(x.0 - y.1) - 4.0 * self.slack;
+        // The larger of the two differences by one comparison (`f64::max` also orders NaNs, which
+        // costs the box tests' hot loop a few instructions each; a NaN here yields the other
+        // difference, as `f64::max` does, or 0 below).
+        let (a, b) = (y.0 - x.1, x.0 - y.1);
+        let g = if a > b { a } else { b } - 4.0 * self.slack;
         if g > 0.0 { g } else { 0.0 }
     }
 
@@ -362,7 +366,10 @@ impl Chord {
         let d = v - o;
         let (x, y) = (d.x * c.x, d.y * c.y);
         let (p, q) = (d.x * c.y, d.y * c.x);
-        (x + y, p - q, (x.abs() + y.abs()).max(p.abs() + q.abs()))
+        let (w1, w2) = (x.abs() + y.abs(), p.abs() + q.abs());
+        // One comparison for the larger (a NaN magnitude comes with a NaN key, which no test
+        // takes as apart and `of` rejects, so which one is kept does not matter).
+        (x + y, p - q, if w1 > w2 { w1 } else { w2 })
     }
 
     /// The frame from `first` along the chord to `last`, boxing `points` (which must hold every
@@ -373,15 +380,18 @@ impl Chord {
         points: impl IntoIterator<Item = DVec2>,
     ) -> Option<Chord> {
         let c = last - first;
-        let (mut s, mut n, mut worst) = ((0.0f64, 0.0f64), (0.0f64, 0.0f64), 0.0f64);
+        let (mut s, mut n, mut worst, mut check) =
+            ((0.0f64, 0.0f64), (0.0f64, 0.0f64), 0.0f64, 0.0f64);
         for v in points {
             let (a, b, w) = Chord::key(first, c, v);
-            s = (s.0.min(a), s.1.max(a));
-            n = (n.0.min(b), n.1.max(b));
-            worst = worst.max(w);
+            s = (lesser(s.0, a), greater(s.1, a));
+            n = (lesser(n.0, b), greater(n.1, b));
+            worst = greater(worst, w);
+            // Non-finite (NaN or infinite) once any key is, or on overflow: checked below.
+            check += a + b;
         }
         let len2 = c.x * c.x + c.y * c.y;
-        let finite = [s.0, s.1, n.0, n.1, worst, len2]
+        let finite = [s.0, s.1, n.0, n.1, worst, len2, check]
             .iter()
             .all(|x| x.is_finite());
         finite.then_some(Chord {
@@ -402,11 +412,24 @@ impl Chord {
         let lens = Lens {
             len: 0.0,
             len2: self.len2,
-            slack: EIGHT_U * self.worst.max(w) + TINY,
+            slack: EIGHT_U * greater(self.worst, w) + TINY,
         };
         // A NaN key or slack makes every comparison false: never apart.
         lens.apart((s, n), self.s, self.n, u2)
     }
+}
+
+/// `max(x, y)` by one comparison (`f64::max` also orders NaNs, a few instructions more in the box
+/// tests' hot loop): `y` when either is NaN, so a NaN `y` is kept where `f64::max` drops it.
+#[inline(always)]
+fn greater(x: f64, y: f64) -> f64 {
+    if x >= y { x } else { y }
+}
+
+/// `min(x, y)` by one comparison: `y` when either is NaN.
+#[inline(always)]
+fn lesser(x: f64, y: f64) -> f64 {
+    if x <= y { x } else { y }
 }
 
 /// `2⁻⁴⁰`: the relative widening of the window, far above the few roundings of its computation.
