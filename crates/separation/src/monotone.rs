@@ -303,11 +303,8 @@ impl Lens {
     /// subtraction of `4E`: the result is at most the exact gap less `E`.
     #[inline]
     pub(crate) fn gap(&self, x: (f64, f64), y: (f64, f64)) -> f64 {
-        // The larger of the two differences by one comparison (`f64::max` also orders NaNs, which
-        // costs the box tests' hot loop a few instructions each; a NaN here yields the other
-        // difference, as `f64::max` does, or 0 below).
-        let (a, b) = (y.0 - x.1, x.0 - y.1);
-        let g = if a > b { a } else { b } - 4.0 * self.slack;
+        // A NaN difference yields the other one, or 0 below: never a gap that is not certain.
+        let g = greater(y.0 - x.1, x.0 - y.1) - 4.0 * self.slack;
         if g > 0.0 { g } else { 0.0 }
     }
 
@@ -366,10 +363,9 @@ impl Chord {
         let d = v - o;
         let (x, y) = (d.x * c.x, d.y * c.y);
         let (p, q) = (d.x * c.y, d.y * c.x);
-        let (w1, w2) = (x.abs() + y.abs(), p.abs() + q.abs());
-        // One comparison for the larger (a NaN magnitude comes with a NaN key, which no test
-        // takes as apart and `of` rejects, so which one is kept does not matter).
-        (x + y, p - q, if w1 > w2 { w1 } else { w2 })
+        // A NaN magnitude comes with a NaN key, which no test takes as apart and `of` rejects, so
+        // which of the two `greater` keeps does not matter.
+        (x + y, p - q, greater(x.abs() + y.abs(), p.abs() + q.abs()))
     }
 
     /// The frame from `first` along the chord to `last`, boxing `points` (which must hold every
@@ -419,17 +415,18 @@ impl Chord {
     }
 }
 
-/// `max(x, y)` by one comparison (`f64::max` also orders NaNs, a few instructions more in the box
-/// tests' hot loop): `y` when either is NaN, so a NaN `y` is kept where `f64::max` drops it.
+/// `max(x, y)` by one strict comparison, which compiles to the processor's `maxsd` (`f64::max`
+/// also orders NaNs, a few instructions more in the box tests' hot loop): `y` when either is NaN,
+/// so a NaN `y` is kept where `f64::max` drops it.
 #[inline(always)]
 fn greater(x: f64, y: f64) -> f64 {
-    if x >= y { x } else { y }
+    if x > y { x } else { y }
 }
 
-/// `min(x, y)` by one comparison: `y` when either is NaN.
+/// `min(x, y)` by one strict comparison (`minsd`): `y` when either is NaN.
 #[inline(always)]
 fn lesser(x: f64, y: f64) -> f64 {
-    if x <= y { x } else { y }
+    if x < y { x } else { y }
 }
 
 /// `2⁻⁴⁰`: the relative widening of the window, far above the few roundings of its computation.
