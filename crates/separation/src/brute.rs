@@ -13,7 +13,7 @@ use polydist_predicates::{Dist2, Kernel, Sign, is_valid_coordinate};
 use crate::chain::validate;
 use crate::construct::{vertex_edge, vertex_vertex};
 use crate::error::{Chain, SeparationError};
-use crate::monotone::{Chord, Lens};
+use crate::monotone::{Chord, Lens, reached};
 use crate::result::ClosestPair;
 
 /// `true` when the open segment `(p, q)` meets the closed segment `[a, b]` (exact under `K`; eight
@@ -1100,10 +1100,22 @@ pub(crate) fn scan_windowed<K: Kernel, C: Points + ?Sized>(
     for pass in (0..2).filter(|_| planned) {
         let ((kx, ky), by) = (sides(pass), blocks.as_ref().map(|b| &b[pass]));
         let mut window = Window::default();
+        let mut team = Team::default();
+        let mine = if pass == 0 { p } else { q };
         for (x, (&t, &d)) in kx.t.iter().zip(kx.d).enumerate() {
             let span = Span::of(window.around(t, ky.t, w), ky.t.len());
             match by {
-                Some(by) => by.survivors(&span, (own(pass, x), (t, d)), lens, u2, &mut kept),
+                Some(by) => {
+                    let near = team.at(
+                        by,
+                        mine,
+                        (x, (span.vs.start, span.vs.end)),
+                        (kx, ky.t),
+                        lens,
+                        (w, u2),
+                    );
+                    by.survivors(&span, (own(pass, x), (t, d)), lens, u2, near, &mut kept);
+                }
                 None => kept.push((None, span.vs, span.es)),
             }
             for (k, vs, es) in kept.drain(..) {
@@ -1140,9 +1152,12 @@ pub(crate) fn scan_windowed<K: Kernel, C: Points + ?Sized>(
     for pass in 0..2 {
         let ((kx, ky), by) = (sides(pass), blocks.as_ref().map(|b| &b[pass]));
         let mut window = Window::default();
+        let mut team = Team::default();
+        let mine = if pass == 0 { p } else { q };
         for (x, (&t, &d)) in kx.t.iter().zip(kx.d).enumerate() {
             let u2 = best.u2();
-            let span = Span::of(window.around(t, ky.t, lens.window(u2)), ky.t.len());
+            let w = lens.window(u2);
+            let span = Span::of(window.around(t, ky.t, w), ky.t.len());
             let Some(by) = by else {
                 tried += best.span(pass, x, (span.vs, span.es), |_, _| false);
                 if tried > budget {
@@ -1150,7 +1165,15 @@ pub(crate) fn scan_windowed<K: Kernel, C: Points + ?Sized>(
                 }
                 continue;
             };
-            by.survivors(&span, (own(pass, x), (t, d)), lens, u2, &mut kept);
+            let near = team.at(
+                by,
+                mine,
+                (x, (span.vs.start, span.vs.end)),
+                (kx, ky.t),
+                lens,
+                (w, u2),
+            );
+            by.survivors(&span, (own(pass, x), (t, d)), lens, u2, near, &mut kept);
             for (_, vs, es) in kept.drain(..) {
                 tried += best.span(pass, x, (vs, es), |item, u2| ky.far(item, (t, d), lens, u2));
             }
@@ -1392,32 +1415,27 @@ impl<'a, C: Points + ?Sized> Blocks<'a, C> {
         }
     }
 
-    /// Pushes the vertices and edges of each fine block of `span` that is not certainly farther
-    /// than `√u2` from the vertex with keys `x` onto `out`, testing the coarse blocks first (a
-    /// coarse block's box holds its fine blocks', and is tested only when the span holds more than
-    /// two of them), and first the wide blocks when the span holds more than [`WIDE`] coarse ones.
-    /// At most `GROUP + 1` box tests per coarse block of the span, and one per wide block.
-    #[inline]
-    fn survivors(
+    /// Pushes onto `near` the coarse blocks of `span` (a team's joint window) not certainly
+    /// farther than `√u2` from every vertex of the team: from its centre `v` with keys `x`, every
+    /// member lies within a reach that `u2` already adds (so a block farther than `√u2` from `v`
+    /// is ruled out for all of them). Wide blocks are tested first when the span holds more than
+    /// [`WIDE`] coarse ones; a coarse block with at most two fine blocks in the span is kept
+    /// untested. At most one box test per coarse block of the span, and one per wide block.
+    fn near(
         &self,
         span: &Span,
         (v, x): (DVec2, (f64, f64)),
         lens: &Lens,
         u2: f64,
-        out: &mut Vec<(Option<usize>, Range<usize>, Range<usize>)>,
+        near: &mut Vec<usize>,
     ) {
+        near.clear();
         let fine = span.blocks(BLOCK);
         let coarse = span.blocks(BLOCK * GROUP);
         let mut in_coarse = |c: usize| {
             let inner = (c * GROUP).max(fine.start)..((c + 1) * GROUP).min(fine.end);
-            if inner.len() > 2 && self.coarse.beyond(c, v, x, lens, u2) {
-                return;
-            }
-            for k in inner {
-                if !self.fine.beyond(k, v, x, lens, u2) {
-                    let (vs, es) = span.within(k);
-                    out.push((Some(k), vs, es));
-                }
+            if inner.len() <= 2 || !self.coarse.beyond(c, v, x, lens, u2) {
+                near.push(c);
             }
         };
         if coarse.len() <= WIDE {
@@ -1430,6 +1448,163 @@ impl<'a, C: Points + ?Sized> Blocks<'a, C> {
                 continue;
             }
             within.for_each(&mut in_coarse);
+        }
+    }
+
+    /// Pushes the vertices and edges of each fine block of `span` that is not certainly farther
+    /// than `√u2` from the vertex `v` with keys `x` onto `out`, testing the coarse blocks first (a
+    /// coarse block's box holds its fine blocks', and is tested only when the span holds more than
+    /// two of them). Alone (`team` is `None`), every coarse block of the span; in a team
+    /// ([`Team`]), only those `near` the team kept of those it tested, `covered`, and any of the
+    /// span beyond `covered` (none when the keys are sorted: the team's window holds the
+    /// vertex's). At most `GROUP + 1` box tests per coarse block taken.
+    #[inline]
+    fn survivors(
+        &self,
+        span: &Span,
+        vx: (DVec2, (f64, f64)),
+        lens: &Lens,
+        u2: f64,
+        team: Option<(&[usize], Range<usize>)>,
+        out: &mut Vec<(Option<usize>, Range<usize>, Range<usize>)>,
+    ) {
+        let fine = span.blocks(BLOCK);
+        let coarse = span.blocks(BLOCK * GROUP);
+        let Some((near, covered)) = team else {
+            for c in coarse {
+                self.in_coarse(c, (span, &fine), vx, lens, u2, out);
+            }
+            return;
+        };
+        for c in coarse.start..coarse.end.min(covered.start) {
+            self.in_coarse(c, (span, &fine), vx, lens, u2, out);
+        }
+        let from = near.partition_point(|&c| c < coarse.start);
+        for &c in near[from..].iter().take_while(|&&c| c < coarse.end) {
+            self.in_coarse(c, (span, &fine), vx, lens, u2, out);
+        }
+        for c in coarse.start.max(covered.end)..coarse.end {
+            self.in_coarse(c, (span, &fine), vx, lens, u2, out);
+        }
+    }
+
+    /// [`Blocks::survivors`] in coarse block `c`, whose fine blocks in the span are those of
+    /// `fine`.
+    #[inline(always)]
+    fn in_coarse(
+        &self,
+        c: usize,
+        (span, fine): (&Span, &Range<usize>),
+        (v, x): (DVec2, (f64, f64)),
+        lens: &Lens,
+        u2: f64,
+        out: &mut Vec<(Option<usize>, Range<usize>, Range<usize>)>,
+    ) {
+        let inner = (c * GROUP).max(fine.start)..((c + 1) * GROUP).min(fine.end);
+        if inner.len() > 2 && self.coarse.beyond(c, v, x, lens, u2) {
+            return;
+        }
+        for k in inner {
+            if !self.fine.beyond(k, v, x, lens, u2) {
+                let (vs, es) = span.within(k);
+                out.push((Some(k), vs, es));
+            }
+        }
+    }
+}
+
+/// Consecutive vertices of a pass's own chain in [`scan_windowed`] that share their coarse box
+/// tests ([`Team`]): on curved walls most coarse blocks of a vertex's window are ruled out for its
+/// whole team at once.
+const TEAM: usize = 8;
+
+/// The coarse blocks of the other chain that [`scan_windowed`]'s current team of [`TEAM`] own
+/// vertices keeps ([`Blocks::near`]), and those it tested.
+#[derive(Default)]
+struct Team {
+    near: Vec<usize>,
+    covered: Range<usize>,
+    /// Teams left to take alone, and how many the last back-off skipped.
+    skip: usize,
+    backoff: usize,
+}
+
+impl Team {
+    /// The coarse blocks kept for vertex `x` of the own chain `own` (keys `kx`, window `lo..hi`
+    /// over the other chain's keys `ky` for the window width `w`) and those tested, or `None`
+    /// when the vertex is taken alone. At the first vertex of a team they are tested for all its
+    /// members against `u2` (which only falls later), from its middle vertex.
+    #[inline(always)]
+    fn at<C: Points + ?Sized>(
+        &mut self,
+        by: &Blocks<'_, C>,
+        own: &C,
+        (x, window): (usize, (usize, usize)),
+        (kx, ky): (Keys<'_>, &[f64]),
+        lens: &Lens,
+        (w, u2): (f64, f64),
+    ) -> Option<(&[usize], Range<usize>)> {
+        if x % TEAM == 0 {
+            if self.skip > 0 {
+                self.skip -= 1;
+                self.covered = 0..0;
+            } else {
+                self.form(by, own, (x, window), (kx, ky), lens, (w, u2));
+            }
+        }
+        (!self.covered.is_empty()).then(|| (self.near.as_slice(), self.covered.clone()))
+    }
+
+    /// [`Team::at`] at the first vertex `x` of a team that tests its blocks.
+    #[inline(never)]
+    fn form<C: Points + ?Sized>(
+        &mut self,
+        by: &Blocks<'_, C>,
+        own: &C,
+        (x, (lo, hi)): (usize, (usize, usize)),
+        (kx, ky): (Keys<'_>, &[f64]),
+        lens: &Lens,
+        (w, u2): (f64, f64),
+    ) {
+        let end = (x + TEAM).min(kx.t.len());
+        // The window of the team's greatest key, from the first member's, ends at or after each
+        // member's (for sorted keys; [`Blocks::survivors`] tests what a member's window holds
+        // beyond it).
+        let top = kx.t[x..end]
+            .iter()
+            .fold(kx.t[x], |a, &t| if t > a { t } else { a });
+        let hi = Window { lo, hi }.around(top, ky, w).1;
+        let joint = Span::of((lo, hi.max(lo)), ky.len());
+        let m = x + (end - x) / 2;
+        let o = own.at(m);
+        // A NaN distance makes `check` NaN, and the reach infinite: nothing is ruled out.
+        let (mut reach, mut check) = (0.0f64, 0.0f64);
+        for i in x..end {
+            let r = own.at(i).distance(o);
+            reach = if r > reach { r } else { reach };
+            check += r;
+        }
+        let reach = if check.is_finite() {
+            reach
+        } else {
+            f64::INFINITY
+        };
+        by.near(
+            &joint,
+            (o, (kx.t[m], kx.d[m])),
+            lens,
+            reached(u2, reach),
+            &mut self.near,
+        );
+        self.covered = joint.blocks(BLOCK * GROUP);
+        // Teams that rule out less than half their blocks (members far apart for the clearance:
+        // spirals sampled coarsely) cost more than they save: back off, doubling the teams taken
+        // alone up to 32 while they keep failing.
+        if 2 * self.near.len() > self.covered.len() {
+            self.backoff = (2 * self.backoff).clamp(1, 32);
+            self.skip = self.backoff;
+        } else {
+            self.backoff = 0;
         }
     }
 }
@@ -1677,6 +1852,86 @@ mod tests {
             }
         }
         assert!(claimed > 20_000 && refused > 20_000, "{claimed} {refused}");
+    }
+
+    /// A team's shared tests ([`Team`]) rule out only coarse blocks whose every vertex and edge is
+    /// farther than `√u2` from every member (exact distances), and on the pocket benchmark in
+    /// miniature (a star's tips, `1` from the wall, facing a dense zigzag wall) they rule out most:
+    /// teams of far-apart members (tips `0.7` radians apart) back off.
+    #[test]
+    fn teams_rule_out_only_blocks_beyond_every_member() {
+        use crate::monotone::keys;
+        use polydist_predicates::exact::squared_distance_point_segment;
+        let at = |a: f64, r: f64| DVec2::new(a.cos(), a.sin()) * r;
+        // A C's wall all round (the pocket's mouth at angle 0), with more than `WIDE` coarse blocks.
+        let wall: Vec<DVec2> = (0..2560)
+            .map(|k| {
+                at(
+                    0.25 + 5.78 * k as f64 / 2559.0,
+                    if k % 2 == 0 { 2.0 } else { 2.5 },
+                )
+            })
+            .collect();
+        let (mut ruled, mut tested, mut backed) = (0usize, 0usize, 0usize);
+        for (round, spacing) in [4e-4, 4e-4, 0.7].into_iter().enumerate() {
+            let star: Vec<DVec2> = (0..48)
+                .map(|k| {
+                    let r = if k % 2 == 0 || round == 2 { 1.0 } else { 0.5 };
+                    at(1.0 + spacing * k as f64, r)
+                })
+                .collect();
+            let (a, b) = (DVec2::new(-3.0, 0.0), DVec2::new(3.0, 0.5));
+            let (kp, kq, lens) = keys(&star, &wall, a, b).expect("finite keys");
+            let (kx, ky) = (Keys { t: &kp.0, d: &kp.1 }, Keys { t: &kq.0, d: &kq.1 });
+            let by = Blocks::of(wall.as_slice(), ky);
+            // Just above the clearance, and (round 1) just below it.
+            let u2 = if round == 1 { 0.999 } else { 1.0 + 1e-9 };
+            let mut team = Team::default();
+            for x in 0..star.len() {
+                let got = team.at(
+                    &by,
+                    star.as_slice(),
+                    (x, (0, 0)),
+                    (kx, ky.t),
+                    &lens,
+                    (f64::INFINITY, u2),
+                );
+                let Some((near, covered)) = got else {
+                    backed += usize::from(x % TEAM == 0);
+                    continue;
+                };
+                if x % TEAM != 0 {
+                    continue;
+                }
+                tested += if round < 2 { covered.len() } else { 0 };
+                let members = x..(x + TEAM).min(star.len());
+                for c in covered.filter(|c| !near.contains(c)) {
+                    ruled += usize::from(round < 2);
+                    let edges = c * BLOCK * GROUP..((c + 1) * BLOCK * GROUP).min(wall.len() - 1);
+                    for (i, e) in members
+                        .clone()
+                        .flat_map(|i| edges.clone().map(move |e| (i, e)))
+                    {
+                        // Far beyond by a rounded distance (a relative margin of 1% dwarfs its
+                        // rounding), or beyond exactly.
+                        let (v, s, t) = (star[i], wall[e], wall[e + 1]);
+                        let h = ((v - s).dot(t - s) / (t - s).length_squared()).clamp(0.0, 1.0);
+                        if (v - (s + (t - s) * h)).length_squared() > 1.01 * u2 {
+                            continue;
+                        }
+                        let d = squared_distance_point_segment(v, s, t).expect("finite");
+                        assert!(
+                            d > to_rational(u2).expect("finite"),
+                            "round {round}: member {i}, block {c}, edge {e}"
+                        );
+                    }
+                }
+            }
+        }
+        assert!(
+            ruled * 2 > tested && backed > 0,
+            "{ruled} of {tested}, {backed}"
+        );
     }
 
     /// `Near::box_gap2` never exceeds the exact squared distance from a point of the box to the

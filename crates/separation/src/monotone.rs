@@ -415,6 +415,24 @@ impl Chord {
     }
 }
 
+/// A squared distance `u2′` with `√u2′ ≥ √u2 + r`, for `r` the distance that `reach` was computed
+/// for as `fl(|v − o|)`: a set farther than `√u2′` from a point `o` is farther than `√u2` from
+/// every point within `r` of `o` (the triangle inequality).
+///
+/// Why. `fl(√u2)`, the sum and the product are each within `u` of their exact values, and
+/// `reach` within `3u` of `r` unless the squares in it underflow, which loses less than
+/// `2⁻⁵³⁶` of `r` (the squares' sum is off by at most `2⁻¹⁰⁷³`); the relative `2⁻⁴⁰` covers the
+/// roundings, the absolute `2⁻⁵⁰⁰` the underflow (and keeps the square normal, so its rounding is
+/// relative too). Infinite (never ruling anything out) when `u2` or `reach` is; NaN (neither)
+/// when either is NaN.
+pub(crate) fn reached(u2: f64, reach: f64) -> f64 {
+    let g = (u2.sqrt() + reach) * (1.0 + WIDEN) + REACH_TINY;
+    g * g
+}
+
+/// `2⁻⁵⁰⁰`: [`reached`]'s allowance for a reach whose squares underflowed.
+const REACH_TINY: f64 = f64::from_bits((1023 - 500) << 52);
+
 /// `max(x, y)` by one strict comparison, which compiles to the processor's `maxsd` (`f64::max`
 /// also orders NaNs, a few instructions more in the box tests' hot loop): `y` when either is NaN,
 /// so a NaN `y` is kept where `f64::max` drops it.
@@ -497,8 +515,13 @@ fn facing<K: Kernel>(v: &[DVec2], a: DVec2, b: DVec2, other_left: bool) -> Optio
 /// `E = 8u·max fl(|p̂ₓ| + |p̂ᵧ|) + 2⁻¹⁰⁰⁰` (the maximum over both keys of every vertex) is above it
 /// (the sum's own rounding is inside the factor two; a product that underflows is off by at most
 /// `2⁻¹⁰⁷⁴`).
-type KeyPair = (Vec<f64>, Vec<f64>);
-fn keys(fp: &[DVec2], fq: &[DVec2], a: DVec2, b: DVec2) -> Option<(KeyPair, KeyPair, Lens)> {
+pub(crate) type KeyPair = (Vec<f64>, Vec<f64>);
+pub(crate) fn keys(
+    fp: &[DVec2],
+    fq: &[DVec2],
+    a: DVec2,
+    b: DVec2,
+) -> Option<(KeyPair, KeyPair, Lens)> {
     let u = b - a;
     let mut worst = 0.0f64;
     let mut key = |v: &DVec2| {
@@ -949,6 +972,35 @@ mod tests {
         }
         assert!(skipped > 15_000 && kept > 15_000, "{skipped} {kept}");
         assert!(beyond > 20_000 && near > 20_000, "{beyond} {near}");
+    }
+
+    /// [`reached`] covers the exact reach: `√u2′ ≥ √u2 + |v − o|` for a reach computed as
+    /// `fl(|v − o|)`, over every scale (checked in rationals: `A − B − R ≥ 0` and
+    /// `(A − B − R)² ≥ 4BR` for `A = u2′`, `B = u2`, `R = |v − o|²`).
+    #[test]
+    fn reached_covers_the_reach() {
+        use polydist_predicates::exact::squared_distance_point_point;
+        let mut rng = SplitMix64::new(0x4eac);
+        let r = |x: f64| to_rational(x).expect("finite");
+        for round in 0..5_000 {
+            let class = round % 6;
+            let (o, v) = (point(&mut rng, class), point(&mut rng, class));
+            let scale = [1.0, 1e-300, 1e300, 0.0, 1e-320][round % 5];
+            let u2 = rng.unit_f64() * scale;
+            let reach = v.distance(o);
+            let got = reached(u2, reach);
+            if !got.is_finite() {
+                continue;
+            }
+            let (a, b) = (r(got), r(u2));
+            let big_r = squared_distance_point_point(v, o).expect("finite");
+            let lhs = &a - &b - &big_r;
+            let four = r(4.0);
+            assert!(
+                lhs >= r(0.0) && &lhs * &lhs >= four * &b * &big_r,
+                "{u2:e} {reach:e} {got:e}"
+            );
+        }
     }
 
     /// A block that [`Chord::apart`] puts farther than `√u2` from a point is: every vertex and
