@@ -1011,7 +1011,8 @@ impl Window {
 /// farther than `U` is skipped whole, and so is one whose box in its own chord's frame is
 /// ([`Chord`]: blocks tilted against the line, zigzags, arcs), and each candidate of the other
 /// blocks is skipped when its own keys put it certainly farther than `U`, before its distance is
-/// bounded. On inputs whose windows along the line are crowded but whose depths differ by about
+/// bounded. In the count (below), consecutive vertices of the pass's own chain go in teams that
+/// share their coarse box tests ([`Team`]). On inputs whose windows along the line are crowded but whose depths differ by about
 /// the clearance (walls of a corridor, sampled far more finely than it is wide) this leaves a few
 /// candidates a vertex; on a star whose tips all face a zigzag wall tilted against the line within
 /// a hair of the clearance, a few dozen.
@@ -1152,12 +1153,9 @@ pub(crate) fn scan_windowed<K: Kernel, C: Points + ?Sized>(
     for pass in 0..2 {
         let ((kx, ky), by) = (sides(pass), blocks.as_ref().map(|b| &b[pass]));
         let mut window = Window::default();
-        let mut team = Team::default();
-        let mine = if pass == 0 { p } else { q };
         for (x, (&t, &d)) in kx.t.iter().zip(kx.d).enumerate() {
             let u2 = best.u2();
-            let w = lens.window(u2);
-            let span = Span::of(window.around(t, ky.t, w), ky.t.len());
+            let span = Span::of(window.around(t, ky.t, lens.window(u2)), ky.t.len());
             let Some(by) = by else {
                 tried += best.span(pass, x, (span.vs, span.es), |_, _| false);
                 if tried > budget {
@@ -1165,15 +1163,7 @@ pub(crate) fn scan_windowed<K: Kernel, C: Points + ?Sized>(
                 }
                 continue;
             };
-            let near = team.at(
-                by,
-                mine,
-                (x, (span.vs.start, span.vs.end)),
-                (kx, ky.t),
-                lens,
-                (w, u2),
-            );
-            by.survivors(&span, (own(pass, x), (t, d)), lens, u2, near, &mut kept);
+            by.survivors(&span, (own(pass, x), (t, d)), lens, u2, None, &mut kept);
             for (_, vs, es) in kept.drain(..) {
                 tried += best.span(pass, x, (vs, es), |item, u2| ky.far(item, (t, d), lens, u2));
             }
@@ -1513,9 +1503,10 @@ impl<'a, C: Points + ?Sized> Blocks<'a, C> {
     }
 }
 
-/// Consecutive vertices of a pass's own chain in [`scan_windowed`] that share their coarse box
-/// tests ([`Team`]): on curved walls most coarse blocks of a vertex's window are ruled out for its
-/// whole team at once.
+/// Consecutive vertices of a pass's own chain in [`scan_windowed`]'s count that share their coarse
+/// box tests ([`Team`]): on curved walls most coarse blocks of a vertex's window are ruled out for
+/// its whole team at once. (The scan without a count, whose windows are sparser, takes its vertices
+/// alone: teams there cost the spirals more than they saved.)
 const TEAM: usize = 8;
 
 /// The coarse blocks of the other chain that [`scan_windowed`]'s current team of [`TEAM`] own
