@@ -149,7 +149,7 @@ struct Ctx<'a, V> {
     frame: Frame,
     v: &'a [V],
     /// Caller index of each vertex.
-    idx: &'a [usize],
+    idx: Ix<'a>,
     /// Each edge's direction along the line ([`Ctx::ends`] orients it upward).
     dirs: &'a [Dir],
     /// Heights compared lexicographically, (height, depth): the scan's symbolic shear (see
@@ -167,7 +167,7 @@ impl<'a, V: Vertex> Ctx<'a, V> {
         Ctx {
             frame,
             v: &cl.v,
-            idx: &cl.idx,
+            idx: cl.idx.as_ix(),
             dirs,
             lex,
         }
@@ -176,7 +176,7 @@ impl<'a, V: Vertex> Ctx<'a, V> {
     fn bad(&self, k: usize, which: Chain) -> SeparationError {
         SeparationError::NotSimple {
             chain: which,
-            index: self.idx[k],
+            index: self.idx.at(k),
         }
     }
 
@@ -453,10 +453,68 @@ fn coalesce(out: &mut Level, start: usize) {
 /// positions `e` and `e + 1`, and for a closed chain the last one, `m − 1`, joins `m − 1` and 0.
 struct Clean<V> {
     v: Vec<V>,
-    idx: Vec<usize>,
-    /// The caller's index of each edge (as many as the vertices for a closed chain, one fewer
-    /// for an open one).
-    callers: Vec<usize>,
+    /// The caller's index of each position.
+    idx: Index,
+    /// The caller's index of each edge.
+    callers: Index,
+    /// As many edges as vertices for a closed chain, one fewer for an open one.
+    edges: usize,
+}
+
+/// Caller indices of a cleaned chain's positions (or edges).
+enum Index {
+    /// Position `k` is the caller's `(k + shift) mod m`: a chain without repeated vertices, whose
+    /// positions and edges are the caller's, rotated ([`Clean::close_at_shortest`]). No table is
+    /// built or rotated for it (the common case: the boundary of a validated polygon).
+    Rotated { shift: usize, m: usize },
+    /// Position `k` is the caller's `table[k]`.
+    Table(Vec<usize>),
+}
+
+impl Index {
+    fn as_ix(&self) -> Ix<'_> {
+        match *self {
+            Index::Rotated { shift, m } => Ix::Rotated { shift, m },
+            Index::Table(ref t) => Ix::Table(t),
+        }
+    }
+
+    fn at(&self, k: usize) -> usize {
+        self.as_ix().at(k)
+    }
+
+    /// Moves position `by` (`< m`) to position 0, as `rotate_left` on a table.
+    fn rotate_left(&mut self, by: usize) {
+        match self {
+            Index::Rotated { shift, m } => {
+                *shift += by;
+                if *shift >= *m {
+                    *shift -= *m;
+                }
+            }
+            Index::Table(t) => t.rotate_left(by),
+        }
+    }
+}
+
+/// A borrowed [`Index`].
+#[derive(Clone, Copy)]
+enum Ix<'a> {
+    Rotated { shift: usize, m: usize },
+    Table(&'a [usize]),
+}
+
+impl Ix<'_> {
+    #[inline]
+    fn at(self, k: usize) -> usize {
+        match self {
+            Ix::Rotated { shift, m } => {
+                let j = k + shift;
+                if j >= m { j - m } else { j }
+            }
+            Ix::Table(t) => t[k],
+        }
+    }
 }
 
 /// Drops repeated consecutive vertices; a chain whose last vertex equals its first (with at least
@@ -464,6 +522,21 @@ struct Clean<V> {
 /// vertex to vertex 0. The caller's edge index of the edge into vertex `k` is the caller index of
 /// `k`'s first occurrence minus one.
 fn clean<V: Vertex>(chain: &[V], which: Chain) -> Result<Clean<V>, SeparationError> {
+    // Without repeated consecutive vertices (a validated polygon's boundary), positions and edges
+    // are the caller's: a copy of the points, no tables.
+    if chain.windows(2).all(|w| w[0] != w[1]) {
+        let n = chain.len();
+        let closed = n >= 2 && chain[0] == chain[n - 1];
+        if !closed || n >= 4 {
+            let m = if closed { n - 1 } else { n };
+            return Ok(Clean {
+                v: chain[..m].to_vec(),
+                idx: Index::Rotated { shift: 0, m },
+                callers: Index::Rotated { shift: 0, m },
+                edges: if closed { m } else { m.saturating_sub(1) },
+            });
+        }
+    }
     let mut v: Vec<V> = Vec::with_capacity(chain.len());
     let mut idx: Vec<usize> = Vec::with_capacity(chain.len());
     for (i, &x) in chain.iter().enumerate() {
@@ -494,7 +567,12 @@ fn clean<V: Vertex>(chain: &[V], which: Chain) -> Result<Clean<V>, SeparationErr
     if closed {
         callers.push(closing);
     }
-    Ok(Clean { v, idx, callers })
+    Ok(Clean {
+        v,
+        idx: Index::Table(idx),
+        edges: callers.len(),
+        callers: Index::Table(callers),
+    })
 }
 
 impl<V: Vertex> Clean<V> {
@@ -548,7 +626,7 @@ fn to_prepared<K: Kernel, V: Vertex>(
         match bp.at {
             At::Vertex(w) => {
                 out.pts.push(c.v[w]);
-                out.idx.push(c.idx[w]);
+                out.idx.push(c.idx.at(w));
             }
             // Only with a non-simple chain or inconsistent decisions.
             At::Edge(_) => return Err(c.bad(bp.y, which)),
@@ -573,9 +651,9 @@ fn to_prepared<K: Kernel, V: Vertex>(
         let hi_root = b != vk1 && c.frame.cmp_height::<K, _>(c.v[b], c.v[vk1]) != Ordering::Equal;
         out.segs.push((c.v[a], c.v[b]));
         out.carry.push(Some(Carry {
-            ia: c.idx[a],
-            ib: c.idx[b],
-            caller: cl.callers[e],
+            ia: c.idx.at(a),
+            ib: c.idx.at(b),
+            caller: cl.callers.at(e),
             lo_root,
             hi_root,
         }));
@@ -588,7 +666,7 @@ fn to_prepared<K: Kernel, V: Vertex>(
 /// edge, a depth test only on the perpendicular ones.
 fn orient_edges<K: Kernel, V: Vertex>(frame: Frame, cl: &Clean<V>) -> (Vec<Dir>, Vec<Dir>) {
     let m = cl.v.len();
-    (0..cl.callers.len())
+    (0..cl.edges)
         .map(|e| {
             let (u, w) = edge_ends(e, m);
             let (u, w) = (cl.v[u], cl.v[w]);
@@ -782,7 +860,8 @@ fn past_the_ends<K: Kernel, V: Vertex>(
 /// walk's current vertex either on it (a node) or hidden behind it together with the one gap (or
 /// the two ends of the range) through which the walk can come back into view. Heights are
 /// compared lexicographically with depths (`c.lex`): a symbolic shear, so distinct vertices have
-/// distinct heights. Returns the nodes bottom to top and the edge between each two.
+/// distinct heights. `c.dirs` must be the edges' directions under that shear ([`orient_edges`]'s
+/// second). Returns the nodes bottom to top and the edge between each two.
 ///
 /// # Complexity
 /// `O(n)`: each edge costs `O(1)` degree-2 tests plus one per node it removes, and a node is
@@ -798,11 +877,13 @@ fn scan<K: Kernel, V: Vertex>(c: &Ctx<'_, V>, m: usize) -> Result<(Vec<usize>, V
         head: NIL,
         tail: NIL,
     };
-    // The first edge alone: its two ends, the lower first.
-    let (lo, hi) = match c.cmp_h::<K>(0, 1) {
-        Ordering::Less => (0, 1),
-        Ordering::Greater => (1, 0),
-        Ordering::Equal => return Err(1),
+    // The first edge alone: its two ends, the lower first. Each edge's direction under the
+    // shear was decided once, by `orient_edges` (`c.dirs`; `Flat` there is two vertices at one
+    // point, or an inconsistent Fast kernel).
+    let (lo, hi) = match c.dirs[0] {
+        Dir::Up => (0, 1),
+        Dir::Down => (1, 0),
+        Dir::Flat => return Err(1),
     };
     list.link(NIL, lo, NIL);
     list.attach(lo, hi, 0, true);
@@ -810,10 +891,10 @@ fn scan<K: Kernel, V: Vertex>(c: &Ctx<'_, V>, m: usize) -> Result<(Vec<usize>, V
     // Edge `e` runs from vertex `e` to vertex `e + 1`.
     for e in 1..m - 1 {
         let (a, b) = (e, e + 1);
-        let up = match c.cmp_h::<K>(b, a) {
-            Ordering::Greater => true,
-            Ordering::Less => false,
-            Ordering::Equal => return Err(b),
+        let up = match c.dirs[e] {
+            Dir::Up => true,
+            Dir::Down => false,
+            Dir::Flat => return Err(b),
         };
         walk = match walk {
             Walk::Visible(u) => {
@@ -901,7 +982,7 @@ pub(crate) fn prepare<K: Kernel, V: Vertex>(
     let mut cl = clean(chain, which)?;
     let m = cl.v.len();
     // A closed chain has as many edges as vertices, its closing edge (`m − 1` → 0) last.
-    let closed = m > 0 && cl.callers.len() == m;
+    let closed = m > 0 && cl.edges == m;
     if closed {
         cl.close_at_shortest(frame);
     }
@@ -1026,8 +1107,9 @@ pub(crate) fn prepare_runs<K: Kernel, V: Vertex>(
     // are never walked nor merged: no envelope names them).
     let cl = Clean {
         v: chain.to_vec(),
-        idx: (0..m).collect(),
-        callers: (0..m.saturating_sub(1)).collect(),
+        idx: Index::Rotated { shift: 0, m },
+        callers: Index::Rotated { shift: 0, m },
+        edges: m.saturating_sub(1),
     };
     let (dirs, sheared) = orient_edges::<K, V>(frame, &cl);
     let c = Ctx::new(frame, &cl, &dirs, false);
@@ -1040,7 +1122,7 @@ pub(crate) fn prepare_runs<K: Kernel, V: Vertex>(
         let sc = Ctx {
             frame,
             v: &cl.v[s..=t],
-            idx: &cl.idx[s..=t],
+            idx: Ix::Rotated { shift: s, m },
             dirs: &sheared[s..t],
             lex: true,
         };
@@ -1116,7 +1198,7 @@ pub(crate) fn prepare_brute<K: Kernel, V: Vertex>(
                 });
             }
         }
-        for e in 0..cl.callers.len() {
+        for e in 0..cl.edges {
             if spans(e, h, true) {
                 best = Some(match best {
                     None => At::Edge(e),
@@ -1128,7 +1210,7 @@ pub(crate) fn prepare_brute<K: Kernel, V: Vertex>(
         let gap = if k + 1 < hs.len() {
             // Edges spanning the slab above h: bottom at or below h, top above h.
             let mut g: Option<usize> = None;
-            for e in 0..cl.callers.len() {
+            for e in 0..cl.edges {
                 let Some((a, b)) = c.lohi(e) else { continue };
                 if frame.cmp_height::<K, _>(cl.v[a], cl.v[h]) != Ordering::Greater
                     && frame.cmp_height::<K, _>(cl.v[b], cl.v[h]) == Ordering::Greater
