@@ -331,39 +331,48 @@ impl Triangulation {
         let mut neighbors = vec![[Neighbor::RingEdge(0); 3]; triangles.len()];
         let mut vertex_triangle = vec![u32::MAX; n];
         // Every diagonal is the side of exactly two triangles, once in each direction. The non-ring
-        // sides are bucketed by their smaller end (a counting sort, `O(n)`), each bucket is sorted by
-        // the larger end (buckets hold a vertex's diagonals: small but for fans), and equal keys are
+        // sides are bucketed by their smaller end (a counting sort, `O(n)`: one pass counts, a
+        // second places, so no list of sides is stored in between), each bucket is sorted by the
+        // larger end (buckets hold a vertex's diagonals: small but for fans), and equal keys are
         // paired. A side is (larger end, triangle, corner << 1 | [runs smaller → larger]).
-        let mut sides: Vec<(u32, u32, u32, u8)> = Vec::with_capacity(2 * n);
+        let next = |k: usize| if k == 2 { 0 } else { k + 1 };
+        // `start[lo + 1]` counts first; the prefix sums then make `start[lo]` bucket `lo`'s start.
+        let mut start = vec![0usize; n + 1];
         for (t, tri) in triangles.iter().enumerate() {
-            let t = t as u32;
             for k in 0..3 {
-                let (u, w) = (tri[k], tri[(k + 1) % 3]);
+                let (u, w) = (tri[k], tri[next(k)]);
                 if u as usize >= n || w as usize >= n {
                     return Err(bad(u, "a corner is not a ring vertex"));
                 }
-                vertex_triangle[u as usize] = t;
+                vertex_triangle[u as usize] = t as u32;
                 if succ(u as usize, n) == w as usize {
-                    neighbors[t as usize][k] = Neighbor::RingEdge(u);
+                    neighbors[t][k] = Neighbor::RingEdge(u);
                 } else {
-                    sides.push((u.min(w), u.max(w), t, ((k as u8) << 1) | u8::from(u < w)));
+                    start[u.min(w) as usize + 1] += 1;
                 }
             }
         }
-        let mut count = vec![0usize; n];
-        for s in &sides {
-            count[s.0 as usize] += 1;
+        for lo in 0..n {
+            start[lo + 1] += start[lo];
         }
-        let start = offsets_of(&count);
-        let mut fill = start.clone();
-        let mut bucketed = vec![(0u32, 0u32, 0u8); sides.len()];
-        for &(lo, hi, t, kd) in &sides {
-            bucketed[fill[lo as usize]] = (hi, t, kd);
-            fill[lo as usize] += 1;
+        let mut fill: Vec<usize> = start[..n].to_vec();
+        let mut bucketed = vec![(0u32, 0u32, 0u8); start[n]];
+        for (t, tri) in triangles.iter().enumerate() {
+            for k in 0..3 {
+                let (u, w) = (tri[k], tri[next(k)]);
+                if succ(u as usize, n) != w as usize {
+                    let lo = u.min(w) as usize;
+                    bucketed[fill[lo]] = (u.max(w), t as u32, ((k as u8) << 1) | u8::from(u < w));
+                    fill[lo] += 1;
+                }
+            }
         }
+        drop(fill);
         for lo in 0..n {
             let bucket = &mut bucketed[start[lo]..start[lo + 1]];
-            bucket.sort_unstable_by_key(|s| s.0);
+            if bucket.len() > 2 {
+                bucket.sort_unstable_by_key(|s| s.0);
+            }
             let mut i = 0;
             while i < bucket.len() {
                 let (hi, t, kd) = bucket[i];
@@ -390,7 +399,7 @@ impl Triangulation {
 }
 
 /// The start of each bucket in a flat array holding `count[k]` items for bucket `k`, and the total
-/// at the end (`count.len() + 1` offsets): the layout of the counting sorts in `glue` and `pieces`.
+/// at the end (`count.len() + 1` offsets): the layout of the counting sort in `pieces`.
 fn offsets_of(count: &[usize]) -> Vec<usize> {
     let mut offsets = Vec::with_capacity(count.len() + 1);
     let mut acc = 0;
