@@ -270,6 +270,30 @@ fn edge_vs_edge<K: Kernel, V: Vertex>(
     }
 }
 
+/// [`edge_vs_edge`]`(e, e − 1)` for the walk's edge `e` and the previous one, when both leave their
+/// common vertex `a` (position `e`) upward (`up`) or both downward: near `a` the nearer edge is the
+/// one on the left of the other, taken upward, so one orientation test decides (the general test
+/// spends two height comparisons first). With `e` from `a` to `b` and `e − 1` from `p` to `a`:
+/// upward, `e` is nearer when `b` is left of `a → p`; downward, when `b` is left of `p → a`.
+/// Collinear edges overlap (the chain is not simple): the general test then names the vertex.
+fn after_previous<K: Kernel, V: Vertex>(
+    c: &Ctx<'_, V>,
+    e: usize,
+    up: bool,
+) -> Result<Ordering, Bad> {
+    let (p, a, b) = (c.v[e - 1], c.v[e], c.v[e + 1]);
+    let s = if up {
+        c.frame.orient::<K, _>(a, p, b)
+    } else {
+        c.frame.orient::<K, _>(p, a, b)
+    };
+    match s {
+        Sign::Positive => Ok(Ordering::Less),
+        Sign::Negative => Ok(Ordering::Greater),
+        Sign::Zero => edge_vs_edge::<K, V>(c, e, e - 1),
+    }
+}
+
 /// The nearer of two points of the chain at the same height.
 fn nearer<K: Kernel, V: Vertex>(c: &Ctx<'_, V>, x: At, y: At) -> Result<At, Bad> {
     let o = match (x, y) {
@@ -902,7 +926,7 @@ fn scan<K: Kernel, V: Vertex>(c: &Ctx<'_, V>, m: usize) -> Result<(Vec<usize>, V
                 // (the one other edge at `a`) can start at `a` there and hide `e`.
                 let side = if up { list.up[u] } else { list.down(u) };
                 let behind =
-                    side == e - 1 && edge_vs_edge::<K, V>(c, e, e - 1)? == Ordering::Greater;
+                    side == e - 1 && after_previous::<K, V>(c, e, up)? == Ordering::Greater;
                 if behind {
                     // Between `e − 1` and the edge passing behind `a` on the other side (or
                     // the end of the range there).
