@@ -407,7 +407,13 @@ pub(crate) fn cmp_scan<K: Kernel>(x: Dist2, y: Dist2) -> Ordering {
 /// (saw-teeth, comb teeth, any pattern copied along the axes) tie this way at every copy, and each
 /// tie would otherwise pay the kernel's exact stage (about 870 instructions under Robust).
 fn congruent(x: Dist2, y: Dist2) -> bool {
-    let diff = |a: DVec2, b: DVec2| Some(DVec2::new(exact_diff(a.x, b.x)?, exact_diff(a.y, b.y)?));
+    // The maps are tested on the rounded differences first, and the differences they used are then
+    // checked to be exact: exact differences are their own roundings, so a configuration that
+    // fails the cheap test is never congruent (the common case on decimal input, where copies
+    // moved along an axis round differently), and one that passes it is only when no difference
+    // rounded.
+    let exact =
+        |a: DVec2, b: DVec2| exact_diff(a.x, b.x).is_some() && exact_diff(a.y, b.y).is_some();
     // Some signed permutation maps `d[0]` to `e[0]` and `d[1]` to `e[1]`: each axis of `e` is one
     // axis of `d` (both vectors' components), times one sign for both vectors. The eight maps in
     // two tests: the axes kept, or swapped.
@@ -419,20 +425,16 @@ fn congruent(x: Dist2, y: Dist2) -> bool {
     };
     match (x, y) {
         (Dist2::PointPoint(p, q), Dist2::PointPoint(r, s)) => {
-            let (Some(d), Some(e)) = (diff(p, q), diff(r, s)) else {
-                return false;
-            };
-            maps([d, DVec2::ZERO], [e, DVec2::ZERO])
+            maps([p - q, DVec2::ZERO], [r - s, DVec2::ZERO]) && exact(p, q) && exact(r, s)
         }
         (Dist2::PointLine(v, a, b), Dist2::PointLine(w, c, e))
         | (Dist2::PointSegment(v, a, b), Dist2::PointSegment(w, c, e)) => {
-            let (Some(d0), Some(d1), Some(e0), Some(e1)) =
-                (diff(v, a), diff(b, a), diff(w, c), diff(e, c))
-            else {
-                return false;
-            };
-            // The second segment read from either end: `w − e` and `c − e = −(e − c)`.
-            maps([d0, d1], [e0, e1]) || diff(w, e).is_some_and(|f0| maps([d0, d1], [f0, -e1]))
+            let (d0, d1, e1) = (v - a, b - a, e - c);
+            let first = || exact(v, a) && exact(b, a);
+            // The second segment read from either end: `w − c` and `e − c`, or `w − e` and
+            // `c − e = −(e − c)`.
+            (maps([d0, d1], [w - c, e1]) && first() && exact(w, c) && exact(e, c))
+                || (maps([d0, d1], [w - e, -e1]) && first() && exact(w, e) && exact(e, c))
         }
         _ => false,
     }
