@@ -299,6 +299,41 @@ pub(crate) fn validate_touching<K: Kernel>(
     })
 }
 
+/// [`validate_touching`] for the disjoint-hull route of two polygons (`polygon.rs`): the line
+/// through `a` and `b` carries a hull edge of one polygon and has the other's hull strictly beyond
+/// it, both decided by exact tests, so under a kernel with exact decisions every vertex is known to
+/// lie on its side, and the `O(n)` check is skipped: only the line's orientation is read, from the
+/// first vertex off it. The vertices on the line are not listed: the polygon beyond the line has
+/// none, so there is no pair on the line to list them for. Under the Fast kernel, the full check.
+pub(crate) fn validate_across_hull_edge<K: Kernel>(
+    p: &[DVec2],
+    q: &[DVec2],
+    a: DVec2,
+    b: DVec2,
+) -> Result<Validated, SeparationError> {
+    if !K::EXACT_DECISIONS || a == b {
+        return validate_touching::<K>(p, q, a, b);
+    }
+    let off = |pts: &[DVec2]| {
+        pts.iter()
+            .map(|&v| K::orient(a, b, v).sign())
+            .find(|s| !s.is_zero())
+    };
+    // Orient the line so that Q is on its left, as `validate_touching` does.
+    let swap = match off(q) {
+        Some(s) => s == Sign::Negative,
+        None => match off(p) {
+            Some(s) => s == Sign::Positive,
+            None => return validate_touching::<K>(p, q, a, b),
+        },
+    };
+    let (l0, l1) = if swap { (b, a) } else { (a, b) };
+    Ok(Validated {
+        frames: Some(Frames::across(l0, l1)),
+        on_line: OnLine::default(),
+    })
+}
+
 /// Checks that a chain is monotone along the line (heights never decrease, or never increase, along
 /// it; repeated consecutive vertices ignored) and does not double back within a run of vertices at
 /// equal height. Required by [`closest_visible_vertices`](crate::closest_visible_vertices) only.

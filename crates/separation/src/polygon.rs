@@ -33,7 +33,7 @@ use crate::error::{Chain, SeparationError};
 use crate::monotone::monotone_sweep;
 use crate::result::{ClosestPair, SeparationStats};
 use crate::separator;
-use crate::sigma::{ChainMethod, chains};
+use crate::sigma::{ChainMethod, chains_across_hull_edge};
 
 /// A straight piece of a polygon's boundary between two of the caller's vertices: internal edge `e`
 /// of a [`SimplePolygon`] joins the caller's vertices `from = source_index(e)` and
@@ -361,7 +361,7 @@ fn hull_route<K: Kernel>(
         HullRouteMethod::Auto => ChainMethod::Auto,
         HullRouteMethod::Section3 => ChainMethod::Matrices,
     };
-    let (pair, stats, swept) = chains::<K>(&cp, &cq, (a, b), how, f64::INFINITY)?;
+    let (pair, stats, swept) = chains_across_hull_edge::<K>(&cp, &cq, (a, b), how)?;
     Ok(Ok(PolygonSeparation::Separated {
         pair: to_caller::<K>(p, q, pair),
         route: if swept {
@@ -519,4 +519,77 @@ pub fn polygon_separation_brute<K: Kernel>(
         route: Route::BruteForce,
         stats: SeparationStats::default(),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::chain::{validate_across_hull_edge, validate_touching};
+    use polydist_oracle::{SplitMix64, hooked_teeth_facing, sawteeth_facing, star};
+    use polydist_polygon::predicates::Robust;
+
+    /// The disjoint-hull route reads only the line's orientation and skips the side check
+    /// (`validate_across_hull_edge`): wherever the route reaches that step, the full check on the
+    /// same line passes, gives the same frames, and finds no pair of vertices on the line. Saw-teeth
+    /// and hooked teeth facing each other (lids closest), turned by random angles and taken in both
+    /// orders, and random stars side by side.
+    #[test]
+    fn the_separating_hull_edge_needs_no_side_check() {
+        let mut rng = SplitMix64::new(0x51de);
+        let turn = |v: &[DVec2], c: f64, s: f64| -> Vec<DVec2> {
+            v.iter()
+                .map(|p| DVec2::new(c * p.x - s * p.y, s * p.x + c * p.y))
+                .collect()
+        };
+        let mut pairs: Vec<(Vec<DVec2>, Vec<DVec2>)> = Vec::new();
+        for t in [1, 2, 7, 40] {
+            for (a, b) in [sawteeth_facing(t), hooked_teeth_facing(t)] {
+                let angle = rng.unit_f64() * core::f64::consts::TAU;
+                let (s, c) = angle.sin_cos();
+                pairs.push((turn(&a, c, s), turn(&b, c, s)));
+                pairs.push((b.clone(), a.clone()));
+                pairs.push((a, b));
+            }
+        }
+        for _ in 0..40 {
+            let a = star(&mut rng, 60, 9);
+            let b = star(&mut rng, 60, 9);
+            // `b` moved right of `a`'s box by up to a tenth of its width, and up or down a little.
+            let right = a.iter().map(|v| v.x).fold(f64::MIN, f64::max);
+            let left = b.iter().map(|v| v.x).fold(f64::MAX, f64::min);
+            let width = right - a.iter().map(|v| v.x).fold(f64::MAX, f64::min);
+            let shift = DVec2::new(
+                right - left + width * (1e-9 + 0.1 * rng.unit_f64()),
+                width * (rng.unit_f64() - 0.5),
+            );
+            pairs.push((a, b.iter().map(|&v| v + shift).collect()));
+        }
+        let mut checked = 0;
+        for (a, b) in &pairs {
+            let (Ok(p), Ok(q)) = (SimplePolygon::try_new(a), SimplePolygon::try_new(b)) else {
+                continue;
+            };
+            let (hp, hq) = (
+                p.convex_hull_with::<Robust>(),
+                q.convex_hull_with::<Robust>(),
+            );
+            let (sep, hint) = distance_with_hint::<Robust>(&hp, &hq, None);
+            let Separation::Disjoint(_) = sep else {
+                continue;
+            };
+            let (fp, fq) = hint.internal_pair().expect("a certified pair");
+            let (l0, l1) = separating_edge::<Robust>(&hp, fp, &hq, fq).expect("a separating edge");
+            let (cp, cq) = (closed_chain(&p), closed_chain(&q));
+            let full = validate_touching::<Robust>(&cp, &cq, l0, l1).expect("both on their sides");
+            let quick = validate_across_hull_edge::<Robust>(&cp, &cq, l0, l1).expect("frames");
+            assert!(!full.on_line.both(), "{a:?} {b:?}");
+            let (Some(f), Some(g)) = (full.frames, quick.frames) else {
+                panic!("no frames");
+            };
+            assert_eq!((f.p.l0, f.p.l1, f.p.mirror), (g.p.l0, g.p.l1, g.p.mirror));
+            assert_eq!((f.q.l0, f.q.l1, f.q.mirror), (g.q.l0, g.q.l1, g.q.mirror));
+            checked += 1;
+        }
+        assert!(checked >= 40, "only {checked} pairs had disjoint hulls");
+    }
 }

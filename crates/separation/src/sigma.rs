@@ -9,7 +9,7 @@ use polydist_polygon::Feature;
 use polydist_predicates::{Dist2, Kernel, Sign};
 
 use crate::chain::{EnvEdge, Frames, Prepared};
-use crate::chain::{OnLine, Validated, validate_touching};
+use crate::chain::{OnLine, Validated, validate_across_hull_edge, validate_touching};
 use crate::construct::{vertex_edge, vertex_vertex};
 use crate::cve::{CveMatrix, EdgeEntry, compare_edge_entries};
 use crate::cvv::CvvMatrix;
@@ -225,7 +225,31 @@ pub(crate) fn chains<K: Kernel>(
     method: ChainMethod,
     cut: f64,
 ) -> Result<(ClosestPair, SeparationStats, bool), SeparationError> {
-    let Validated { frames, on_line } = validate_touching::<K>(p, q, a, b)?;
+    let validated = validate_touching::<K>(p, q, a, b)?;
+    chains_validated::<K>(p, q, validated, method, cut)
+}
+
+/// [`chains`] for the boundaries of two polygons across the line of a hull edge that has the other
+/// hull strictly beyond it (the disjoint-hull route): the sides are not checked vertex by vertex
+/// under an exact kernel ([`validate_across_hull_edge`]).
+pub(crate) fn chains_across_hull_edge<K: Kernel>(
+    p: &[DVec2],
+    q: &[DVec2],
+    (a, b): (DVec2, DVec2),
+    method: ChainMethod,
+) -> Result<(ClosestPair, SeparationStats, bool), SeparationError> {
+    let validated = validate_across_hull_edge::<K>(p, q, a, b)?;
+    chains_validated::<K>(p, q, validated, method, f64::INFINITY)
+}
+
+/// [`chains`] after the validation.
+fn chains_validated<K: Kernel>(
+    p: &[DVec2],
+    q: &[DVec2],
+    Validated { frames, on_line }: Validated,
+    method: ChainMethod,
+    cut: f64,
+) -> Result<(ClosestPair, SeparationStats, bool), SeparationError> {
     let on_line = if on_line.both() {
         on_the_line::<K>(p, q, &on_line)
     } else {
