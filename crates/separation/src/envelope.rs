@@ -42,6 +42,7 @@
 //! linear scan") has the cases and the proofs.
 
 use core::cmp::Ordering;
+use std::borrow::Cow;
 
 use glam::DVec2;
 use polydist_predicates::{Kernel, Sign, is_valid_coordinate};
@@ -163,7 +164,7 @@ struct Ctx<'a, V> {
 type Bad = usize;
 
 impl<'a, V: Vertex> Ctx<'a, V> {
-    fn new(frame: Frame, cl: &'a Clean<V>, dirs: &'a [Dir], lex: bool) -> Self {
+    fn new(frame: Frame, cl: &'a Clean<'_, V>, dirs: &'a [Dir], lex: bool) -> Self {
         Ctx {
             frame,
             v: &cl.v,
@@ -475,8 +476,10 @@ fn coalesce(out: &mut Level, start: usize) {
 
 /// A chain with repeated consecutive vertices dropped and a closing repeat removed. Edge `e` joins
 /// positions `e` and `e + 1`, and for a closed chain the last one, `m − 1`, joins `m − 1` and 0.
-struct Clean<V> {
-    v: Vec<V>,
+struct Clean<'a, V: Clone> {
+    /// The points, borrowed from the caller's chain when they are its own (no repeated vertex,
+    /// no rotation yet).
+    v: Cow<'a, [V]>,
     /// The caller's index of each position.
     idx: Index,
     /// The caller's index of each edge.
@@ -545,7 +548,7 @@ impl Ix<'_> {
 /// three distinct vertices) is closed: the repeat is removed and the closing edge joins the last
 /// vertex to vertex 0. The caller's edge index of the edge into vertex `k` is the caller index of
 /// `k`'s first occurrence minus one.
-fn clean<V: Vertex>(chain: &[V], which: Chain) -> Result<Clean<V>, SeparationError> {
+fn clean<V: Vertex>(chain: &[V], which: Chain) -> Result<Clean<'_, V>, SeparationError> {
     // Without repeated consecutive vertices (a validated polygon's boundary), positions and edges
     // are the caller's: a copy of the points, no tables.
     if chain.windows(2).all(|w| w[0] != w[1]) {
@@ -554,7 +557,7 @@ fn clean<V: Vertex>(chain: &[V], which: Chain) -> Result<Clean<V>, SeparationErr
         if !closed || n >= 4 {
             let m = if closed { n - 1 } else { n };
             return Ok(Clean {
-                v: chain[..m].to_vec(),
+                v: Cow::Borrowed(&chain[..m]),
                 idx: Index::Rotated { shift: 0, m },
                 callers: Index::Rotated { shift: 0, m },
                 edges: if closed { m } else { m.saturating_sub(1) },
@@ -592,14 +595,14 @@ fn clean<V: Vertex>(chain: &[V], which: Chain) -> Result<Clean<V>, SeparationErr
         callers.push(closing);
     }
     Ok(Clean {
-        v,
+        v: Cow::Owned(v),
         idx: Index::Table(idx),
         edges: callers.len(),
         callers: Index::Table(callers),
     })
 }
 
-impl<V: Vertex> Clean<V> {
+impl<V: Vertex> Clean<'_, V> {
     /// Rotates a closed chain so that its closing edge (merged in after the walk, [`prepare`]) is
     /// the edge of least height extent along the frame's line, as `f64` approximations estimate
     /// it: the merge then meets few breakpoints. Only the work depends on the choice (the
@@ -629,7 +632,8 @@ impl<V: Vertex> Clean<V> {
         }
         // New position `k` is old position `z + 1 + k`: old edge `z` becomes the closing edge.
         let shift = z + 1;
-        self.v.rotate_left(shift);
+        // One copy, rotated as it is made (a borrowed chain is copied here for the first time).
+        self.v = Cow::Owned([&self.v[shift..], &self.v[..shift]].concat());
         self.idx.rotate_left(shift);
         // Edge `k` keeps joining positions `k` and `k + 1` (mod `m`): only its caller moves.
         self.callers.rotate_left(shift);
@@ -639,7 +643,7 @@ impl<V: Vertex> Clean<V> {
 /// The envelope of a cleaned chain, as visible vertices and one edge between each two.
 fn to_prepared<K: Kernel, V: Vertex>(
     c: &Ctx<'_, V>,
-    cl: &Clean<V>,
+    cl: &Clean<'_, V>,
     env: Env<'_>,
     which: Chain,
     gapped: bool,
@@ -688,7 +692,7 @@ fn to_prepared<K: Kernel, V: Vertex>(
 /// Each edge's direction: by true height (`Flat` for an edge perpendicular to the line), and under
 /// the scan's shear (a perpendicular edge then points away from the line). One height test per
 /// edge, a depth test only on the perpendicular ones.
-fn orient_edges<K: Kernel, V: Vertex>(frame: Frame, cl: &Clean<V>) -> (Vec<Dir>, Vec<Dir>) {
+fn orient_edges<K: Kernel, V: Vertex>(frame: Frame, cl: &Clean<'_, V>) -> (Vec<Dir>, Vec<Dir>) {
     let m = cl.v.len();
     (0..cl.edges)
         .map(|e| {
@@ -1130,7 +1134,7 @@ pub(crate) fn prepare_runs<K: Kernel, V: Vertex>(
     // Every position its own index; edge `k` joins positions `k` and `k + 1` (those between runs
     // are never walked nor merged: no envelope names them).
     let cl = Clean {
-        v: chain.to_vec(),
+        v: Cow::Borrowed(chain),
         idx: Index::Rotated { shift: 0, m },
         callers: Index::Rotated { shift: 0, m },
         edges: m.saturating_sub(1),
