@@ -332,9 +332,9 @@ impl Triangulation {
         let mut vertex_triangle = vec![u32::MAX; n];
         // Every diagonal is the side of exactly two triangles, once in each direction. The non-ring
         // sides are bucketed by their smaller end (a counting sort, `O(n)`: one pass counts, a
-        // second places, so no list of sides is stored in between), each bucket is sorted by the
-        // larger end (buckets hold a vertex's diagonals: small but for fans), and equal keys are
-        // paired. A side is (larger end, triangle, corner << 1 | [runs smaller → larger]).
+        // second places, so no list of sides is stored in between), each bucket of more than two
+        // is sorted by the larger end (buckets hold a vertex's diagonals: small but for fans), and
+        // equal keys are paired. A side is (larger end, triangle, corner << 1 | [runs smaller → larger]).
         let next = |k: usize| if k == 2 { 0 } else { k + 1 };
         // `start[lo + 1]` counts first; the prefix sums then make `start[lo]` bucket `lo`'s start.
         let mut start = vec![0usize; n + 1];
