@@ -345,7 +345,7 @@ fn hull_route<K: Kernel>(
     }
     let (a, b) = separating_edge::<K>(&hp, fp, &hq, fq).ok_or(SeparationError::Inconsistent)?;
     if method == HullRouteMethod::Auto {
-        if let Some(s) = monotone_sweep::<K>(p, q, a, b) {
+        if let Some(s) = monotone_sweep::<K>((p, &ip), (q, &iq), a, b) {
             return Ok(Ok(PolygonSeparation::Separated {
                 pair: to_caller::<K>(p, q, s.pair),
                 route: Route::MonotoneSweep,
