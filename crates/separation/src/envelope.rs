@@ -610,23 +610,9 @@ impl<V: Vertex> Clean<'_, V> {
     /// indices and edges move together. `O(n)`, no predicate.
     fn close_at_shortest(&mut self, frame: Frame) {
         let m = self.v.len();
-        let d = frame.l1 - frame.l0;
-        let t = |x: V| x.approx().dot(d);
-        // Edge `k` joins positions `k` and `k + 1` (the last one, `m − 1` and 0): the first edge
-        // of least extent, each key computed once.
-        let Some(&last) = self.v.last() else {
+        let Some(z) = least_extent_edge(&self.v, frame.l1 - frame.l0) else {
             return;
         };
-        let (mut z, mut least) = (m - 1, (t(self.v[0]) - t(last)).abs());
-        let mut prev = t(self.v[0]);
-        for k in 0..m - 1 {
-            let next = t(self.v[k + 1]);
-            let extent = (next - prev).abs();
-            if extent.total_cmp(&least).is_lt() || (k < z && extent.total_cmp(&least).is_eq()) {
-                (z, least) = (k, extent);
-            }
-            prev = next;
-        }
         if z + 1 == m {
             return;
         }
@@ -638,6 +624,30 @@ impl<V: Vertex> Clean<'_, V> {
         // Edge `k` keeps joining positions `k` and `k + 1` (mod `m`): only its caller moves.
         self.callers.rotate_left(shift);
     }
+}
+
+/// The edge of least height extent along `d` of the closed chain `v` (edge `k` joins positions `k`
+/// and `k + 1`, the last one `m − 1` and 0), as `f64` approximations estimate it: the closing edge
+/// when it is among the least, otherwise the first of them. `None` for an empty chain. `O(m)`, no
+/// predicate; each key computed once. [`Clean::close_at_shortest`] rotates a chain so that this edge
+/// closes it, and a caller that hands over a chain rotated so already saves that copy.
+pub(crate) fn least_extent_edge<V: Vertex>(v: &[V], d: DVec2) -> Option<usize> {
+    let t = |x: V| x.approx().dot(d);
+    let (&first, &last) = (v.first()?, v.last()?);
+    let m = v.len();
+    let (mut z, mut least) = (m - 1, (t(first) - t(last)).abs());
+    let mut prev = t(first);
+    for k in 0..m - 1 {
+        let next = t(v[k + 1]);
+        let extent = (next - prev).abs();
+        // Strictly less than the least so far: the closing edge (`z = m − 1`) keeps its place
+        // among equals, and so does the first of the others.
+        if extent.total_cmp(&least).is_lt() {
+            (z, least) = (k, extent);
+        }
+        prev = next;
+    }
+    Some(z)
 }
 
 /// The envelope of a cleaned chain, as visible vertices and one edge between each two.

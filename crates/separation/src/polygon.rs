@@ -29,6 +29,7 @@ use polydist_polygon::predicates::{Kernel, Orientation};
 use polydist_polygon::{ConvexPolygon, Feature, Location, SimplePolygon};
 
 use crate::brute::separation_brute;
+use crate::envelope::least_extent_edge;
 use crate::error::{Chain, SeparationError};
 use crate::monotone::monotone_sweep;
 use crate::result::{ClosestPair, SeparationStats};
@@ -356,12 +357,27 @@ fn hull_route<K: Kernel>(
             }));
         }
     }
-    let (cp, cq) = (closed_chain(p), closed_chain(q));
+    // Each boundary starts after its edge of least extent along the line, so that Lemma 2's scan
+    // closes each chain with it without copying the chain again to rotate it
+    // (`envelope::least_extent_edge`).
+    let shift =
+        |p: &SimplePolygon| least_extent_edge(p.vertices(), b - a).map_or(0, |z| (z + 1) % p.len());
+    let (sp, sq) = (shift(p), shift(q));
+    let (cp, cq) = (closed_chain_from(p, sp), closed_chain_from(q, sq));
     let how = match method {
         HullRouteMethod::Auto => ChainMethod::Auto,
         HullRouteMethod::Section3 => ChainMethod::Matrices,
     };
     let (pair, stats, swept) = chains_across_hull_edge::<K>(&cp, &cq, (a, b), how)?;
+    let unrotate = |f: Feature, n: usize, s: usize| match f {
+        Feature::Vertex(i) => Feature::Vertex((i % n + s) % n),
+        Feature::Edge(e) => Feature::Edge((e % n + s) % n),
+    };
+    let pair = ClosestPair {
+        feature_p: unrotate(pair.feature_p, p.len(), sp),
+        feature_q: unrotate(pair.feature_q, q.len(), sq),
+        ..pair
+    };
     Ok(Ok(PolygonSeparation::Separated {
         pair: to_caller::<K>(p, q, pair),
         route: if swept {
@@ -405,10 +421,17 @@ fn separator_route<K: Kernel>(
 
 /// The internal vertices of `p` followed by its first vertex again: the boundary as a closed chain.
 pub(crate) fn closed_chain(p: &SimplePolygon) -> Vec<DVec2> {
+    closed_chain_from(p, 0)
+}
+
+/// [`closed_chain`] starting at internal vertex `s` (`< n`): chain position `i` is internal vertex
+/// `(i + s) mod n`, chain edge `i` internal edge `(i + s) mod n`.
+fn closed_chain_from(p: &SimplePolygon, s: usize) -> Vec<DVec2> {
     let v = p.vertices();
     let mut c = Vec::with_capacity(v.len() + 1);
-    c.extend_from_slice(v);
-    c.push(v[0]);
+    c.extend_from_slice(&v[s..]);
+    c.extend_from_slice(&v[..s]);
+    c.push(v[s]);
     c
 }
 
