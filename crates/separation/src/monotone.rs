@@ -57,8 +57,9 @@ pub(crate) struct Swept {
 /// overflow, or when the budget runs out.
 ///
 /// # Complexity
-/// `O(N)`: `O(N)` exact degree-2 signs for the extreme vertices and the monotonicity test, `O(N)`
-/// for the keys, and at most `96N + 1024` candidates ([`budget`]).
+/// `O(N)`: `O(h)` exact degree-2 signs for the extreme vertices (sought among the `h` hull
+/// vertices `hull_p`, `hull_q`: each polygon's hull, as internal indices), `O(N)` for the
+/// monotonicity test and for the keys, and at most `96N + 1024` candidates ([`budget`]).
 pub(crate) fn monotone_sweep<K: Kernel>(
     (p, hull_p): (&SimplePolygon, &[usize]),
     (q, hull_q): (&SimplePolygon, &[usize]),
@@ -456,7 +457,7 @@ const EIGHT_U: f64 = 1.0 / 1_125_899_906_842_624.0;
 
 /// The facing chain of the counter-clockwise ring `v` (internal vertex indices, in non-decreasing
 /// order of `t`), for the other polygon to the left of `a → b` when `other_left`; `None` when it is
-/// not monotone. `O(n)` exact degree-2 signs.
+/// not monotone. `O(n)` exact degree-2 signs (`O(h)` of them for the extremes with `hull`).
 ///
 /// The chain runs between the two extremes of `t`, ties to the vertex nearest the other polygon.
 /// With `hull`, the indices of the ring's convex hull vertices, they are sought among those only:
