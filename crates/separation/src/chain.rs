@@ -253,33 +253,16 @@ pub(crate) fn validate_touching<K: Kernel>(
     if a == b {
         return Err(SeparationError::DegenerateLine);
     }
-    // Orient the line so that Q is on its left: from the first vertex strictly off the line.
-    let first_q = q
-        .iter()
-        .map(|&v| K::orient(a, b, v).sign())
-        .find(|s| !s.is_zero());
-    let swap = match first_q {
-        Some(s) => s == Sign::Negative,
-        None => match p
-            .iter()
-            .map(|&v| K::orient(a, b, v).sign())
-            .find(|s| !s.is_zero())
-        {
-            Some(s) => s == Sign::Positive,
-            // Every vertex of both chains lies on the line.
-            None => {
-                return Ok(Validated {
-                    frames: None,
-                    on_line: OnLine {
-                        p: (0..p.len()).collect(),
-                        q: (0..q.len()).collect(),
-                    },
-                });
-            }
-        },
+    let Some(frames) = oriented::<K>(p, q, a, b) else {
+        // Every vertex of both chains lies on the line.
+        return Ok(Validated {
+            frames: None,
+            on_line: OnLine {
+                p: (0..p.len()).collect(),
+                q: (0..q.len()).collect(),
+            },
+        });
     };
-    let (l0, l1) = if swap { (b, a) } else { (a, b) };
-    let frames = Frames::across(l0, l1);
     let mut on_line = OnLine::default();
     for (chain, pts, frame, on) in [
         (Chain::P, p, frames.p, &mut on_line.p),
@@ -314,24 +297,29 @@ pub(crate) fn validate_across_hull_edge<K: Kernel>(
     if !K::EXACT_DECISIONS || a == b {
         return validate_touching::<K>(p, q, a, b);
     }
+    match oriented::<K>(p, q, a, b) {
+        Some(frames) => Ok(Validated {
+            frames: Some(frames),
+            on_line: OnLine::default(),
+        }),
+        None => validate_touching::<K>(p, q, a, b),
+    }
+}
+
+/// The frames of the line through `a` and `b` oriented so that `Q` is on its left, read from the
+/// first vertex strictly off it (of `Q`, else of `P`); `None` when every vertex lies on the line.
+fn oriented<K: Kernel>(p: &[DVec2], q: &[DVec2], a: DVec2, b: DVec2) -> Option<Frames> {
     let off = |pts: &[DVec2]| {
         pts.iter()
             .map(|&v| K::orient(a, b, v).sign())
             .find(|s| !s.is_zero())
     };
-    // Orient the line so that Q is on its left, as `validate_touching` does.
     let swap = match off(q) {
         Some(s) => s == Sign::Negative,
-        None => match off(p) {
-            Some(s) => s == Sign::Positive,
-            None => return validate_touching::<K>(p, q, a, b),
-        },
+        None => off(p)? == Sign::Positive,
     };
     let (l0, l1) = if swap { (b, a) } else { (a, b) };
-    Ok(Validated {
-        frames: Some(Frames::across(l0, l1)),
-        on_line: OnLine::default(),
-    })
+    Some(Frames::across(l0, l1))
 }
 
 /// Checks that a chain is monotone along the line (heights never decrease, or never increase, along

@@ -550,7 +550,7 @@ impl Ix<'_> {
 /// `k`'s first occurrence minus one.
 fn clean<V: Vertex>(chain: &[V], which: Chain) -> Result<Clean<'_, V>, SeparationError> {
     // Without repeated consecutive vertices (a validated polygon's boundary), positions and edges
-    // are the caller's: a copy of the points, no tables.
+    // are the caller's: the points borrowed, no tables.
     if chain.windows(2).all(|w| w[0] != w[1]) {
         let n = chain.len();
         let closed = n >= 2 && chain[0] == chain[n - 1];

@@ -352,9 +352,7 @@ impl Triangulation {
                 }
             }
         }
-        for lo in 0..n {
-            start[lo + 1] += start[lo];
-        }
+        offsets_in_place(&mut start);
         let mut fill: Vec<usize> = start[..n].to_vec();
         let mut bucketed = vec![(0u32, 0u32, 0u8); start[n]];
         for (t, tri) in triangles.iter().enumerate() {
@@ -398,17 +396,13 @@ impl Triangulation {
     }
 }
 
-/// The start of each bucket in a flat array holding `count[k]` items for bucket `k`, and the total
-/// at the end (`count.len() + 1` offsets): the layout of the counting sort in `pieces`.
-fn offsets_of(count: &[usize]) -> Vec<usize> {
-    let mut offsets = Vec::with_capacity(count.len() + 1);
-    let mut acc = 0;
-    offsets.push(0);
-    for &c in count {
-        acc += c;
-        offsets.push(acc);
+/// Turns `slots`, where `slots[k + 1]` counts the items of bucket `k` and `slots[0]` is 0, into the
+/// start of each bucket in a flat array, with the total at the end (prefix sums, in place): the
+/// layout of the counting sorts in `glue` and `pieces`.
+fn offsets_in_place(slots: &mut [usize]) {
+    for k in 1..slots.len() {
+        slots[k] += slots[k - 1];
     }
-    offsets
 }
 
 /// `i + 1 mod n` for `i < n`, without a division (the sweeps' and the gluing's hot loops).
@@ -689,15 +683,16 @@ fn pieces<K: Kernel>(
     let bad = |index: usize, what| TriangulationError::Inconsistent { index, what };
     // Outgoing sides per vertex, in one flat array (vertex v owns out[offsets[v]..offsets[v + 1]]):
     // slot 0 is the ring edge to v + 1, then the diagonals by angle.
-    let mut count = vec![1usize; n];
+    let mut offsets = vec![1usize; n + 1];
+    offsets[0] = 0;
     for &(a, b) in diagonals {
         if a >= n || b >= n {
             return Err(bad(a.min(b), "a diagonal end is not a ring vertex"));
         }
-        count[a] += 1;
-        count[b] += 1;
+        offsets[a + 1] += 1;
+        offsets[b + 1] += 1;
     }
-    let offsets = offsets_of(&count);
+    offsets_in_place(&mut offsets);
     let total = offsets[n];
     let mut out = vec![usize::MAX; total];
     let mut fill: Vec<usize> = offsets[..n].iter().map(|&o| o + 1).collect();
