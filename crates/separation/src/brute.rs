@@ -770,28 +770,33 @@ struct BoxNode {
     kids: Option<(usize, usize)>,
 }
 
-/// The box hierarchy of a chain: nodes of at most `LEAF` owned vertices, split in halves.
+/// The box hierarchy of a chain: nodes of at most `LEAF` owned vertices, split in halves. A leaf's
+/// box is its vertices' (the far end of its last edge included), an inner node's the union of its
+/// kids' (which hold the same vertices): `O(n)`, not a pass over each level.
 fn boxes(c: &[DVec2]) -> Vec<BoxNode> {
     const LEAF: usize = 8;
     fn build(c: &[DVec2], s: usize, e: usize, out: &mut Vec<BoxNode>) -> usize {
-        let last = e.min(c.len() - 1);
-        let (lo, hi) = c[s..=last]
-            .iter()
-            .fold((c[s], c[s]), |(lo, hi), &v| (lo.min(v), hi.max(v)));
         let id = out.len();
         out.push(BoxNode {
             s,
             e,
-            lo,
-            hi,
+            lo: c[s],
+            hi: c[s],
             kids: None,
         });
-        if e - s > LEAF {
+        let (lo, hi) = if e - s > LEAF {
             let m = s + (e - s) / 2;
             let a = build(c, s, m, out);
             let b = build(c, m, e, out);
             out[id].kids = Some((a, b));
-        }
+            (out[a].lo.min(out[b].lo), out[a].hi.max(out[b].hi))
+        } else {
+            let last = e.min(c.len() - 1);
+            c[s..=last]
+                .iter()
+                .fold((c[s], c[s]), |(lo, hi), &v| (lo.min(v), hi.max(v)))
+        };
+        (out[id].lo, out[id].hi) = (lo, hi);
         id
     }
     let mut out = Vec::with_capacity(c.len() / 4 + 2);
@@ -2129,6 +2134,29 @@ mod tests {
         }
         // The seen ranges held the nearest pair often enough for the fold to matter.
         assert!(skipped_the_winner > 100, "{skipped_the_winner}");
+    }
+
+    #[test]
+    fn box_nodes_hold_exactly_their_vertices() {
+        // Each node's box is the least box of its vertices `s..=min(e, n − 1)` (inner nodes take the
+        // union of their kids'), and its kids split its range at one vertex.
+        let mut rng = SplitMix64::new(0xb0c5);
+        for round in 0..400 {
+            let n = 1 + rng.index(300);
+            let c: Vec<DVec2> = (0..n).map(|_| point(&mut rng, round % 5)).collect();
+            let nodes = boxes(&c);
+            assert_eq!((nodes[0].s, nodes[0].e), (0, n));
+            for node in &nodes {
+                let own = &c[node.s..=node.e.min(n - 1)];
+                let lo = own.iter().fold(own[0], |a, &v| a.min(v));
+                let hi = own.iter().fold(own[0], |a, &v| a.max(v));
+                assert_eq!((node.lo, node.hi), (lo, hi), "round {round}");
+                if let Some((a, b)) = node.kids {
+                    let (a, b) = (&nodes[a], &nodes[b]);
+                    assert_eq!((a.s, a.e, b.e), (node.s, b.s, node.e), "round {round}");
+                }
+            }
+        }
     }
 
     #[test]
