@@ -335,9 +335,13 @@ impl Winner {
 /// Either test may come first (both are certain); the cheaper one does. The bounds of a point pair
 /// or of a horizontal or vertical edge are a subtraction and a square, cheaper than the foot test's
 /// two dot signs; the others cost two divisions, and on a star's tips facing a curved wall most
-/// candidates fail the foot test (their edges' lines pass near the tip, the feet outside).
+/// candidates fail the foot test (their edges' lines pass near the tip, the feet outside). With
+/// `BOUNDS_FIRST` the bounds come first for every edge: in the plain scans of small subproblems
+/// (the separator's comb teeth, jittered: both chains short and nearly parallel to each other) most
+/// vertex–edge candidates lie farther from the edge's line than the best, and the bounds rule them
+/// out where the foot test would not.
 #[inline(always)]
-fn filter<K: Kernel, C: Points + ?Sized>(
+fn filter<K: Kernel, C: Points + ?Sized, const BOUNDS_FIRST: bool>(
     c: Cand,
     p: &C,
     q: &C,
@@ -363,7 +367,7 @@ fn filter<K: Kernel, C: Points + ?Sized>(
             (q.at(j), s, t)
         }
     };
-    if s.x == t.x || s.y == t.y {
+    if BOUNDS_FIRST || s.x == t.x || s.y == t.y {
         let b = edge_bounds(v, s, t);
         (b.0 <= u2 && foot_inside::<K>(v, s, t)).then_some(b)
     } else if foot_inside::<K>(v, s, t) {
@@ -717,7 +721,7 @@ fn scan_best<K: Kernel>(
         cut: f64,
         seen: Seen,
     ) -> (Cand, f64) {
-        let mut best = Best::<K, I>::new(p, q, cut);
+        let mut best = Best::<K, I, [DVec2], true>::new(p, q, cut);
         let mut consider = |c: Cand| best.consider(c);
         let (sp, sq) = (&seen.p, &seen.q);
         // Edge `k` is seen when both its ends are.
@@ -903,7 +907,7 @@ fn scan_pruned_best<K: Kernel>(
     // `cut`) are skipped and candidates bounded strictly below it are taken.
     let best_b = core::cell::Cell::new(best.scan_bounds(p, q, interior_only));
     let consider = |c: Cand, best: &mut Cand, best_d: &mut Dist2| {
-        let Some(b) = filter::<K, _>(c, p, q, interior_only, cut.min(best_b.get().1)) else {
+        let Some(b) = filter::<K, _, false>(c, p, q, interior_only, cut.min(best_b.get().1)) else {
             return;
         };
         let d = dist(c);
@@ -1188,7 +1192,8 @@ type Planned = (usize, Option<usize>, Range<usize>, Range<usize>);
 
 /// The best candidate so far of a scan ([`scan`], [`scan_windowed`]), with its exact distance and
 /// its bounds.
-struct Best<'a, K, const INTERIOR_ONLY: bool, C: ?Sized = [DVec2]> {
+struct Best<'a, K, const INTERIOR_ONLY: bool, C: ?Sized = [DVec2], const BOUNDS_FIRST: bool = false>
+{
     p: &'a C,
     q: &'a C,
     cut: f64,
@@ -1198,7 +1203,9 @@ struct Best<'a, K, const INTERIOR_ONLY: bool, C: ?Sized = [DVec2]> {
     kernel: core::marker::PhantomData<K>,
 }
 
-impl<'a, K: Kernel, const INTERIOR_ONLY: bool, C: Points + ?Sized> Best<'a, K, INTERIOR_ONLY, C> {
+impl<'a, K: Kernel, const INTERIOR_ONLY: bool, C: Points + ?Sized, const BOUNDS_FIRST: bool>
+    Best<'a, K, INTERIOR_ONLY, C, BOUNDS_FIRST>
+{
     fn new(p: &'a C, q: &'a C, cut: f64) -> Self {
         let best = Cand::Vv(0, 0);
         Best {
@@ -1221,7 +1228,7 @@ impl<'a, K: Kernel, const INTERIOR_ONLY: bool, C: Points + ?Sized> Best<'a, K, I
     /// [`filter`] with the scan's `INTERIOR_ONLY` and [`Best::u2`].
     #[inline(always)]
     fn filter(&self, c: Cand) -> Option<(f64, f64)> {
-        filter::<K, C>(c, self.p, self.q, INTERIOR_ONLY, self.u2())
+        filter::<K, C, BOUNDS_FIRST>(c, self.p, self.q, INTERIOR_ONLY, self.u2())
     }
 
     /// Takes `c` when it is nearer than the best: skipped when bounded strictly above the best or
