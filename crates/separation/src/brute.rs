@@ -402,6 +402,27 @@ pub(crate) fn cmp_scan<K: Kernel>(x: Dist2, y: Dist2) -> Ordering {
     K::cmp_dist2(x, y)
 }
 
+/// [`cmp_scan`] of a distance `x` against a best distance `y` whose square is at most `cut` (an
+/// upper bound, [`upper_bound`]): under the exact kernels, after the shortcut for coordinate gaps,
+/// an `x` whose lower bound ([`lower_bound`]) is strictly above `cut` is farther, with no exact
+/// comparison (the separator's subproblem winners against the best so far: most are farther, and
+/// few are gaps along an axis unless they tie). The same order as [`cmp_scan`].
+#[inline(never)]
+pub(crate) fn cmp_scan_cut<K: Kernel>(x: Dist2, y: Dist2, cut: f64) -> Ordering {
+    if K::EXACT_DECISIONS {
+        if let (Some(gx), Some(gy)) = (axis_gap(x), axis_gap(y)) {
+            return gx.total_cmp(&gy);
+        }
+        if lower_bound(x) > cut {
+            return Ordering::Greater;
+        }
+        if congruent(x, y) {
+            return Ordering::Equal;
+        }
+    }
+    K::cmp_dist2(x, y)
+}
+
 /// Whether two distances are certainly equal because one configuration is the other moved by a
 /// symmetry of the square lattice (a translation, then a signed permutation of the axes): both are
 /// the same form, their difference vectors (`p − q`; or `v − a` and `b − a`, or for the second
@@ -1661,6 +1682,18 @@ pub(crate) fn farther_from_line_than(v: DVec2, a: DVec2, c: DVec2, cut: f64) -> 
     bounds::<[DVec2]>(Cand::QvPe(0, 0), &[a, c], &[v]).0 > cut
 }
 
+/// A lower bound of the squared distance `d`, from [`bounds`]: a point pair's, or for a point and a
+/// segment (or a line) the line's, since a segment's points lie on its line. `0` when the bounds
+/// give up (a tiny edge, overflow, underflow).
+fn lower_bound(d: Dist2) -> f64 {
+    match d {
+        Dist2::PointPoint(v, w) => bounds::<[DVec2]>(Cand::Vv(0, 0), &[v], &[w]).0,
+        Dist2::PointSegment(v, a, b) | Dist2::PointLine(v, a, b) => {
+            bounds::<[DVec2]>(Cand::QvPe(0, 0), &[a, b], &[v]).0
+        }
+    }
+}
+
 /// An upper bound of the squared distance `d` (a point pair, or a point and a closed segment),
 /// from [`bounds`]: the nearer end's, or the line's when the foot is strictly inside the segment
 /// (exact dot signs). `∞` when the bounds give up.
@@ -2194,6 +2227,34 @@ mod tests {
                 );
             }
         }
+    }
+
+    /// `cmp_scan_cut` orders as `cmp_scan` and the exact kernel, the best's cut its upper bound, on
+    /// point pairs and point–segment distances of every scale class (lattice ties, near and far
+    /// ones), and its bound decides often.
+    #[test]
+    fn the_cut_comparison_keeps_the_order() {
+        let mut rng = SplitMix64::new(0xc07);
+        let mut decided_by_bound = 0;
+        for round in 0..30_000 {
+            let class = round % 5;
+            let dist = |rng: &mut SplitMix64| {
+                let (v, a, b) = (point(rng, class), point(rng, class), point(rng, class));
+                if rng.index(2) == 0 {
+                    Dist2::PointPoint(v, a)
+                } else {
+                    Dist2::PointSegment(v, a, b)
+                }
+            };
+            let (x, y) = (dist(&mut rng), dist(&mut rng));
+            let cut = upper_bound::<Exact>(y);
+            let order = cmp_scan_cut::<Robust>(x, y, cut);
+            assert_eq!(order, cmp_scan::<Robust>(x, y), "{x:?} {y:?}");
+            assert_eq!(order, Exact::cmp_dist2(x, y), "{x:?} {y:?}");
+            assert_eq!(cmp_scan_cut::<Exact>(x, y, cut), order, "{x:?} {y:?}");
+            decided_by_bound += usize::from(lower_bound(x) > cut);
+        }
+        assert!(decided_by_bound > 5_000, "{decided_by_bound}");
     }
 
     /// The scans' shortcut for axis-parallel distances agrees with the exact kernel, on lattice

@@ -31,7 +31,7 @@ use polydist_polygon::{Feature, SimplePolygon, convex_hull_of_two_with};
 #[cfg(test)]
 use crate::brute::separation_brute;
 use crate::brute::{
-    Near, Seen, Winner, boxes_farther_than, cmp_scan, farther_from_line_than,
+    Near, Seen, Winner, boxes_farther_than, cmp_scan_cut, farther_from_line_than,
     scan_pruned_winner_below, scan_winner_below_except, upper_bound,
 };
 use crate::error::SeparationError;
@@ -1638,10 +1638,11 @@ fn solve_pass<K: Kernel>(
                 };
                 let d = dist_of(vp, vq, fp, fq);
                 // Subproblem winners tie with the best on rectilinear input (combs): compared as
-                // coordinate gaps there, as the scans compare them.
+                // coordinate gaps there, as the scans compare them; others are first bounded
+                // against the best's cut (most of the jittered combs' teeth are farther).
                 if best
                     .as_ref()
-                    .is_none_or(|b| cmp_scan::<K>(d, b.d) == Ordering::Less)
+                    .is_none_or(|b| cmp_scan_cut::<K>(d, b.d, b.cut) == Ordering::Less)
                 {
                     *best = Some(Best {
                         found,
