@@ -391,15 +391,7 @@ fn foot_inside<K: Kernel>(v: DVec2, a: DVec2, b: DVec2) -> bool {
 /// would otherwise pay). Out of line: only near ties get here, and the scans' loops stay small.
 #[inline(never)]
 pub(crate) fn cmp_scan<K: Kernel>(x: Dist2, y: Dist2) -> Ordering {
-    if K::EXACT_DECISIONS {
-        if let (Some(gx), Some(gy)) = (axis_gap(x), axis_gap(y)) {
-            return gx.total_cmp(&gy);
-        }
-        if congruent(x, y) {
-            return Ordering::Equal;
-        }
-    }
-    K::cmp_dist2(x, y)
+    cmp_scan_below::<K>(x, y, f64::INFINITY)
 }
 
 /// [`cmp_scan`] of a distance `x` against a best distance `y` whose square is at most `cut` (an
@@ -409,11 +401,17 @@ pub(crate) fn cmp_scan<K: Kernel>(x: Dist2, y: Dist2) -> Ordering {
 /// few are gaps along an axis unless they tie). The same order as [`cmp_scan`].
 #[inline(never)]
 pub(crate) fn cmp_scan_cut<K: Kernel>(x: Dist2, y: Dist2, cut: f64) -> Ordering {
+    cmp_scan_below::<K>(x, y, cut)
+}
+
+/// The body of [`cmp_scan`] and [`cmp_scan_cut`] (an infinite `cut` tests no bound).
+#[inline(always)]
+fn cmp_scan_below<K: Kernel>(x: Dist2, y: Dist2, cut: f64) -> Ordering {
     if K::EXACT_DECISIONS {
         if let (Some(gx), Some(gy)) = (axis_gap(x), axis_gap(y)) {
             return gx.total_cmp(&gy);
         }
-        if lower_bound(x) > cut {
+        if cut < f64::INFINITY && lower_bound(x) > cut {
             return Ordering::Greater;
         }
         if congruent(x, y) {
