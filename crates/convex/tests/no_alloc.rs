@@ -9,7 +9,12 @@
 //! `BigInt` on a wide dynamic range); they are not claimed here.
 //!
 //! The counter is process-wide, so this file holds a single test (no other test thread allocates
-//! while a region is open), and the polygons are built before each measured region.
+//! while a region is open), and the polygons are built before each measured region. The test
+//! harness's own thread can still allocate while a region is open (seen once in CI, 2026-12-07:
+//! four allocations, 900 bytes, in one region of 270, not reproducible), so a region that counts
+//! an allocation runs the same queries again in a fresh region, once per test run at most
+//! ([`measured`]). An allocation of the queries themselves recurs on the same inputs and still
+//! fails the test.
 
 use std::alloc::System;
 
@@ -43,26 +48,50 @@ fn pair(rng: &mut SplitMix64, n: usize, m: usize, along_x: bool) -> (ConvexPolyg
     )
 }
 
+/// Runs `queries` in a measured region and returns their answers. If the region counts an
+/// allocation or a reallocation and no region has been run again yet (`retried`), the same queries
+/// run again in a fresh region, which alone is then checked (see the module docs).
+///
+/// # Panics
+/// Panics if the region checked counts an allocation or a reallocation.
+fn measured<T>(what: &str, retried: &mut usize, queries: impl Fn() -> T) -> T {
+    let region = Region::new(GLOBAL);
+    let out = queries();
+    let mut change = region.change();
+    if (change.allocations, change.reallocations) != (0, 0) && *retried == 0 {
+        *retried += 1;
+        eprintln!("{what}: {change:?} in the first run; running the same queries again");
+        let region = Region::new(GLOBAL);
+        std::hint::black_box(queries());
+        change = region.change();
+    }
+    assert_eq!(
+        (change.allocations, change.reallocations),
+        (0, 0),
+        "{what}: {change:?}"
+    );
+    out
+}
+
 #[test]
 fn robust_queries_do_not_allocate() {
     const SIZES: [usize; 9] = [3, 4, 5, 7, 8, 16, 64, 512, 4096];
     let mut rng = SplitMix64::new(2024);
     let mut queries = 0;
+    let mut retried = 0;
     for (k, &n) in SIZES.iter().enumerate() {
         for &m in &SIZES[k..] {
             for round in 0..6 {
                 let (p, q) = pair(&mut rng, n, m, round % 3 == 0);
-                let region = Region::new(GLOBAL);
-                let a = distance(&p, &q);
-                let b = distance_yang_with::<Robust>(&p, &q);
-                let c = distance(&q, &p);
-                let d = distance_yang_with::<Robust>(&q, &p);
-                let change = region.change();
-                assert_eq!(
-                    (change.allocations, change.reallocations),
-                    (0, 0),
-                    "n = {n}, m = {m}, round {round}: {change:?}"
-                );
+                let what = format!("n = {n}, m = {m}, round {round}");
+                let (a, b, c, d) = measured(&what, &mut retried, || {
+                    (
+                        distance(&p, &q),
+                        distance_yang_with::<Robust>(&p, &q),
+                        distance(&q, &p),
+                        distance_yang_with::<Robust>(&q, &p),
+                    )
+                });
                 // The inputs are disjoint: a query that returned early would not test the search.
                 for s in [a, b, c, d] {
                     assert!(
@@ -76,17 +105,15 @@ fn robust_queries_do_not_allocate() {
                 let c = p.vertices().iter().copied().sum::<DVec2>() / p.len() as f64;
                 let moved: Vec<DVec2> = p.vertices().iter().map(|&v| c + (v - c) * 0.5).collect();
                 let overlapping = ConvexPolygon::try_new(&moved).expect("valid");
-                let region = Region::new(GLOBAL);
-                let e = distance(&p, &overlapping);
-                let f = contact_with::<Robust>(&p, &overlapping);
-                let g = distance_within::<Robust>(&p, &q, 0.5 * a.distance());
-                let h = distance_within::<Robust>(&p, &q, 2.0 * a.distance());
-                let change = region.change();
-                assert_eq!(
-                    (change.allocations, change.reallocations),
-                    (0, 0),
-                    "meeting / within, n = {n}, m = {m}, round {round}: {change:?}"
-                );
+                let what = format!("meeting / within, n = {n}, m = {m}, round {round}");
+                let (e, f, g, h) = measured(&what, &mut retried, || {
+                    (
+                        distance(&p, &overlapping),
+                        contact_with::<Robust>(&p, &overlapping),
+                        distance_within::<Robust>(&p, &q, 0.5 * a.distance()),
+                        distance_within::<Robust>(&p, &q, 2.0 * a.distance()),
+                    )
+                });
                 assert_eq!((e, f), (Separation::Overlapping, Contact::Overlapping));
                 assert!(matches!(g, Within::Beyond { .. }) && matches!(h, Within::Inside(_)));
                 queries += 4;
