@@ -1017,11 +1017,32 @@ pub(crate) fn prepare<K: Kernel, V: Vertex>(
     frame: Frame,
     which: Chain,
 ) -> Result<Prepared<V>, SeparationError> {
+    prepare_closing::<K, V>(chain, frame, which, Closing::AtLeastExtent)
+}
+
+/// Where [`prepare_closing`] closes a closed chain's walk.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Closing {
+    /// At its edge of least extent along the line ([`least_extent_edge`]), found and rotated to.
+    AtLeastExtent,
+    /// At its last edge as given: the caller rotated the chain so already (the disjoint-hull
+    /// route), and the `O(n)` search is not done again. Only the work depends on the edge, never
+    /// the envelope.
+    AsGiven,
+}
+
+/// [`prepare`], with the caller's choice of the closing edge of a closed chain.
+pub(crate) fn prepare_closing<K: Kernel, V: Vertex>(
+    chain: &[V],
+    frame: Frame,
+    which: Chain,
+    closing: Closing,
+) -> Result<Prepared<V>, SeparationError> {
     let mut cl = clean(chain, which)?;
     let m = cl.v.len();
     // A closed chain has as many edges as vertices, its closing edge (`m − 1` → 0) last.
     let closed = m > 0 && cl.edges == m;
-    if closed {
+    if closed && closing == Closing::AtLeastExtent {
         cl.close_at_shortest(frame);
     }
     // Each temporary is dropped as soon as it is read for the last time, so that the envelope
@@ -1413,4 +1434,78 @@ pub fn perpendicular_envelope_brute<K: Kernel>(
     b: DVec2,
 ) -> Result<Envelope, SeparationError> {
     public::<K>(chain, a, b, true)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use polydist_predicates::Robust;
+
+    /// A star-shaped closed chain right of the y axis (first vertex repeated at the end), its
+    /// coordinates rounded to multiples of `grain` (a coarse grain gives tied heights).
+    fn star(m: usize, seed: u64, grain: f64) -> Vec<DVec2> {
+        let mut s = seed;
+        let mut next = || {
+            s = s
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (s >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut v: Vec<DVec2> = (0..m)
+            .map(|k| {
+                let t = core::f64::consts::TAU * k as f64 / m as f64;
+                let r = 2.0 + 6.0 * next();
+                let p = DVec2::new(10.0 + r * t.cos(), r * t.sin());
+                (p / grain).round() * grain
+            })
+            .collect();
+        v.dedup();
+        v.push(v[0]);
+        v
+    }
+
+    /// The envelope as caller vertices and edges, shifted back by `r` of `m`.
+    fn unrotated(p: &Prepared<DVec2>, r: usize, m: usize) -> (Vec<usize>, Vec<usize>) {
+        let back = |i: usize| (i + r) % m;
+        let vs = p.idx.iter().map(|&i| back(i)).collect();
+        let es = p.carry.iter().flatten().map(|c| back(c.caller)).collect();
+        (vs, es)
+    }
+
+    /// The disjoint-hull route hands over chains rotated to close at their least extent edge and
+    /// skips the search (`Closing::AsGiven`); closing a chain at any other edge must give the same
+    /// envelope too (only the work differs), on generic and on tied heights.
+    #[test]
+    fn a_chain_closed_as_given_has_the_envelope_of_the_least_extent_closing() {
+        let frame = Frame {
+            l0: DVec2::ZERO,
+            l1: DVec2::Y,
+            mirror: false,
+        };
+        for grain in [1e-9, 0.5, 1.0] {
+            let mut tested = 0;
+            for seed in 0..40 {
+                let chain = star(40, seed, grain);
+                let m = chain.len() - 1;
+                // Rounding to a coarse grain can fold the star onto itself.
+                if polydist_polygon::SimplePolygon::try_new(&chain[..m]).is_err() {
+                    continue;
+                }
+                tested += 1;
+                let want = prepare::<Robust, _>(&chain, frame, Chain::P).unwrap();
+                let want = unrotated(&want, 0, m);
+                for r in 0..m {
+                    let mut rotated: Vec<DVec2> =
+                        chain[r..m].iter().chain(&chain[..r]).copied().collect();
+                    rotated.push(rotated[0]);
+                    let got =
+                        prepare_closing::<Robust, _>(&rotated, frame, Chain::P, Closing::AsGiven)
+                            .unwrap();
+                    let got = unrotated(&got, r, m);
+                    assert_eq!(got, want, "seed {seed}, grain {grain}, rotation {r}");
+                }
+            }
+            assert!(tested >= 10, "grain {grain}: {tested} simple stars");
+        }
+    }
 }

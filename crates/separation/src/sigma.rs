@@ -13,7 +13,7 @@ use crate::chain::{OnLine, Validated, validate_across_hull_edge, validate_touchi
 use crate::construct::{vertex_edge, vertex_vertex};
 use crate::cve::{CveMatrix, EdgeEntry, compare_edge_entries};
 use crate::cvv::CvvMatrix;
-use crate::envelope::prepare;
+use crate::envelope::{Closing, prepare_closing};
 use crate::error::{Chain, SeparationError};
 use crate::monotone::sweep_envelopes;
 use crate::pieces::pieces;
@@ -226,12 +226,14 @@ pub(crate) fn chains<K: Kernel>(
     cut: f64,
 ) -> Result<(ClosestPair, SeparationStats, bool), SeparationError> {
     let validated = validate_touching::<K>(p, q, a, b)?;
-    chains_validated::<K>(p, q, validated, method, cut)
+    chains_validated::<K>(p, q, validated, method, cut, Closing::AtLeastExtent)
 }
 
 /// [`chains`] for the boundaries of two polygons across the line of a hull edge that has the other
 /// hull strictly beyond it (the disjoint-hull route): the sides are not checked vertex by vertex
-/// under an exact kernel ([`validate_across_hull_edge`]).
+/// under an exact kernel ([`validate_across_hull_edge`]). Each closed chain comes rotated so that
+/// its closing edge is its edge of least extent along the line (`envelope::least_extent_edge`), and
+/// Lemma 2's envelope closes it there without searching again.
 pub(crate) fn chains_across_hull_edge<K: Kernel>(
     p: &[DVec2],
     q: &[DVec2],
@@ -239,7 +241,7 @@ pub(crate) fn chains_across_hull_edge<K: Kernel>(
     method: ChainMethod,
 ) -> Result<(ClosestPair, SeparationStats, bool), SeparationError> {
     let validated = validate_across_hull_edge::<K>(p, q, a, b)?;
-    chains_validated::<K>(p, q, validated, method, f64::INFINITY)
+    chains_validated::<K>(p, q, validated, method, f64::INFINITY, Closing::AsGiven)
 }
 
 /// [`chains`] after the validation.
@@ -249,6 +251,7 @@ fn chains_validated<K: Kernel>(
     Validated { frames, on_line }: Validated,
     method: ChainMethod,
     cut: f64,
+    closing: Closing,
 ) -> Result<(ClosestPair, SeparationStats, bool), SeparationError> {
     let on_line = if on_line.both() {
         on_the_line::<K>(p, q, &on_line)
@@ -260,12 +263,12 @@ fn chains_validated<K: Kernel>(
         let c = on_line.ok_or(SeparationError::Inconsistent)?;
         return Ok((build::<K>(c), SeparationStats::default(), false));
     };
+    let pp = prepare_closing::<K, _>(p, frames.p, Chain::P, closing)?;
+    let qq = prepare_closing::<K, _>(q, frames.q, Chain::Q, closing)?;
     if method == ChainMethod::Matrices {
-        let (best, stats) = solve::<K, DVec2>(p, q, frames, on_line)?;
+        let (best, stats) = solve_prepared::<K, DVec2>(pp, qq, frames, on_line)?;
         return Ok((build::<K>(best), stats, false));
     }
-    let pp = prepare::<K, _>(p, frames.p, Chain::P)?;
-    let qq = prepare::<K, _>(q, frames.q, Chain::Q)?;
     let Some((swept, tried)) = sweep_envelopes::<K>(&pp, &qq, frames, cut) else {
         let (best, stats) = solve_prepared::<K, DVec2>(pp, qq, frames, on_line)?;
         return Ok((build::<K>(best), stats, false));
@@ -282,21 +285,10 @@ fn chains_validated<K: Kernel>(
 }
 
 /// Section 3 on two validated chains (of input points, or of sites: runs clipped to the line's
-/// half-planes, docs/algorithms/separator.md, "Step G"): Lemma 2's envelopes, then CVV and CVE both
-/// ways, and the best of these and `extra` (the on-line pair). The candidate is in the chains' own
-/// vertex and edge indices. `O(n_p + n_q)`.
-pub(crate) fn solve<K: Kernel, V: Vertex>(
-    p: &[V],
-    q: &[V],
-    frames: Frames,
-    extra: Option<Cand<V>>,
-) -> Result<(Cand<V>, SeparationStats), SeparationError> {
-    let pp = prepare::<K, _>(p, frames.p, Chain::P)?;
-    let qq = prepare::<K, _>(q, frames.q, Chain::Q)?;
-    solve_prepared::<K, V>(pp, qq, frames, extra)
-}
-
-/// [`solve`] on envelopes already prepared (those of clipped chains may have gaps).
+/// half-planes, docs/algorithms/separator.md, "Step G") whose Lemma 2 envelopes are prepared
+/// (those of clipped chains may have gaps): CVV and CVE both ways, and the best of these and
+/// `extra` (the on-line pair). The candidate is in the chains' own vertex and edge indices.
+/// `O(n_p + n_q)`.
 pub(crate) fn solve_prepared<K: Kernel, V: Vertex>(
     pp: Prepared<V>,
     qq: Prepared<V>,
