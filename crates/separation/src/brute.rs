@@ -1295,15 +1295,8 @@ impl<'a, K: Kernel, const INTERIOR_ONLY: bool, C: Points + ?Sized, const BOUNDS_
     /// the cut, taken when bounded strictly below the best, compared exactly otherwise.
     #[inline(always)]
     fn consider(&mut self, c: Cand) {
-        let (p, q, interior_only) = (self.p, self.q, INTERIOR_ONLY);
-        let Some(b) = self.filter(c) else {
-            return;
-        };
-        let d = c.scan_dist(p, q, interior_only);
-        if b.1 < self.b.0 || cmp_scan::<K>(d, self.d) == Ordering::Less {
-            self.best = c;
-            self.d = d;
-            self.b = b;
+        if let Some(b) = self.filter(c) {
+            self.take(c, b);
         }
     }
 
