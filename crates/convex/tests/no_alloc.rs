@@ -49,17 +49,17 @@ fn pair(rng: &mut SplitMix64, n: usize, m: usize, along_x: bool) -> (ConvexPolyg
 }
 
 /// Runs `queries` in a measured region and returns their answers. If the region counts an
-/// allocation or a reallocation and no region has been run again yet (`retried`), the same queries
-/// run again in a fresh region, which alone is then checked (see the module docs).
+/// allocation or a reallocation and no region has been run again yet (`retried` is false), the
+/// same queries run again in a fresh region, which alone is then checked (see the module docs).
 ///
 /// # Panics
 /// Panics if the region checked counts an allocation or a reallocation.
-fn measured<T>(what: &str, retried: &mut usize, queries: impl Fn() -> T) -> T {
+fn measured<T>(what: &str, retried: &mut bool, queries: impl Fn() -> T) -> T {
     let region = Region::new(GLOBAL);
     let out = queries();
     let mut change = region.change();
-    if (change.allocations, change.reallocations) != (0, 0) && *retried == 0 {
-        *retried += 1;
+    if (change.allocations, change.reallocations) != (0, 0) && !*retried {
+        *retried = true;
         eprintln!("{what}: {change:?} in the first run; running the same queries again");
         let region = Region::new(GLOBAL);
         std::hint::black_box(queries());
@@ -78,7 +78,7 @@ fn robust_queries_do_not_allocate() {
     const SIZES: [usize; 9] = [3, 4, 5, 7, 8, 16, 64, 512, 4096];
     let mut rng = SplitMix64::new(2024);
     let mut queries = 0;
-    let mut retried = 0;
+    let mut retried = false;
     for (k, &n) in SIZES.iter().enumerate() {
         for &m in &SIZES[k..] {
             for round in 0..6 {

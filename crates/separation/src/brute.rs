@@ -1055,9 +1055,10 @@ impl Window {
 /// at once. When that count ran, its blocks are the ones tried (a block kept for the count's best
 /// is kept for any later, nearer best; it is tested again only once the best has fallen by more
 /// than a sixty-fourth), so the boxes are not tested twice ([`run_plan`], which tests each edge's
-/// foot before its keys when the count kept more than [`FOOT_FIRST`] candidates a vertex). With a finite `cut` (the square of a
-/// distance known elsewhere), candidates bounded strictly above it are skipped and the windows are never wider than for `cut`, as in
-/// [`scan_winner_below`]: the winner is the nearest pair when that is strictly nearer than the
+/// foot before its keys when the count kept more than [`FOOT_FIRST`] candidates a vertex). With a
+/// finite `cut` (the square of a distance known elsewhere), candidates bounded strictly above it
+/// are skipped and the windows are never wider than for `cut`, as in [`scan_winner_below`]: the
+/// winner is the nearest pair when that is strictly nearer than the
 /// known distance, some pair of the chains otherwise.
 ///
 /// # Complexity
@@ -1222,17 +1223,21 @@ fn run_plan<K: Kernel, C: Points + ?Sized>(
         let ((kx, ky), by) = (sides[pass], blocks.map(|b| &b[pass]));
         for (x, k, vs, es) in plan {
             let (t, d) = (kx.t[x], kx.d[x]);
-            let own = if pass == 0 {
-                best.p.at(x)
-            } else {
-                best.q.at(x)
-            };
             // A block kept for the count's best is tried again when the best has since
             // fallen by more than a sixty-fourth (only the work depends on it).
             let now = best.u2();
             let fallen = now * (1.0 + 1.0 / 64.0) < u2;
             let fine = by.zip(k).map(|(by, k)| (&by.fine, k));
-            if fallen && fine.is_some_and(|(f, k)| f.beyond(k, own, (t, d), lens, now)) {
+            if fallen
+                && fine.is_some_and(|(f, k)| {
+                    let own = if pass == 0 {
+                        best.p.at(x)
+                    } else {
+                        best.q.at(x)
+                    };
+                    f.beyond(k, own, (t, d), lens, now)
+                })
+            {
                 continue;
             }
             let far = |item, u2| ky.far(item, (t, d), lens, u2);
@@ -1369,9 +1374,12 @@ impl<'a, K: Kernel, const INTERIOR_ONLY: bool, C: Points + ?Sized, const BOUNDS_
         (vs, es): (Range<usize>, Range<usize>),
         far: impl Fn(Item, f64) -> bool,
     ) -> usize {
-        if !INTERIOR_ONLY {
-            return self.span(pass, x, (vs, es), far);
-        }
+        const {
+            assert!(
+                INTERIOR_ONLY,
+                "the foot test skips edges in interior-only scans only"
+            )
+        };
         // The vertices as `span` takes them.
         let tried = self.span(pass, x, (vs, es.start..es.start), &far) + es.len();
         for e in es {
