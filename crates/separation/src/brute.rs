@@ -998,6 +998,14 @@ fn scan_pruned_best<K: Kernel>(
     (best, best_b.get().1)
 }
 
+/// The least and greatest of the computed depths `d` (`(∞, −∞)` for none).
+fn depths(d: &[f64]) -> (f64, f64) {
+    d.iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &x| {
+            (if x < lo { x } else { lo }, if x > hi { x } else { hi })
+        })
+}
+
 /// The window of [`scan_windowed`] over the other chain's keys `ty`: its ends only move forward,
 /// for keys `t` visited in non-decreasing exact order.
 #[derive(Default)]
@@ -1031,7 +1039,8 @@ impl Window {
 /// together). `U²` is the current best candidate's squared-distance upper bound, so a skipped
 /// candidate certainly loses.
 ///
-/// A first pass takes each `P` vertex against the `Q` vertices next to it in key order, so the
+/// A first pass takes each `P` vertex against the `Q` vertices next to it in key order, and a
+/// descent from its best to strictly nearer neighbouring vertex pairs ([`Best::descend`]), so the
 /// windows start narrow; then each `P` vertex against the `Q` vertices and edges in its window, and
 /// each `Q` vertex against the `P` edges in its window. The window's ends only move forward:
 /// vertices left behind were certainly out of an earlier, wider window of a smaller key, so of this
@@ -1052,7 +1061,10 @@ impl Window {
 /// the first pass the work for the best so far is counted before any candidate is evaluated: the
 /// blocks the windows meet (their ends moved alone, `O(n_p + n_q)`), then, when those fit the
 /// budget, the candidates of the blocks not skipped whole; when either exceeds the budget, `None`
-/// at once. When that count ran, its blocks are the ones tried (a block kept for the count's best
+/// at once. A vertex whose depth is certainly farther than `U` from every depth of the other
+/// chain is left out of the count and the scan, and so, when the blocks met still exceed the
+/// budget, are the other chain's coarse blocks whose depths are ([`Live`]: windows wider than the
+/// chains, where only depth thins them). When that count ran, its blocks are the ones tried (a block kept for the count's best
 /// is kept for any later, nearer best; it is tested again only once the best has fallen by more
 /// than a sixty-fourth), so the boxes are not tested twice ([`run_plan`], which tests each edge's
 /// foot before its keys when the count kept more than [`FOOT_FIRST`] candidates a vertex). With a
@@ -1096,6 +1108,7 @@ pub(crate) fn scan_windowed<K: Kernel, C: Points + ?Sized>(
         }
     }
     tried += 2 * np;
+    tried += best.descend(np, nq, np + nq);
     // `P` vertices against `Q` vertices and edges (pass 0), `Q` vertices against `P` edges (pass 1).
     let sides = |pass: usize| if pass == 0 { (kp, kq) } else { (kq, kp) };
     // The work for the best so far, counted before any candidate is evaluated: first the coarse
@@ -1103,22 +1116,53 @@ pub(crate) fn scan_windowed<K: Kernel, C: Points + ?Sized>(
     // candidates fit the budget, the candidates of the fine blocks not skipped.
     let u2 = best.u2();
     let w = lens.window(u2);
-    let (mut coarse, mut whole) = (0usize, tried);
-    for pass in 0..2 {
-        let (kx, ky) = sides(pass);
-        let mut window = Window::default();
-        for &t in kx.t {
-            let span = Span::of(window.around(t, ky.t, w), ky.t.len());
-            coarse += span.blocks(BLOCK * GROUP).len();
-            whole += span.es.len() + if pass == 0 { span.vs.len() } else { 0 };
+    // A vertex whose depth is certainly farther than the best from every depth of the other chain
+    // has no candidate that could win: it is left out of the count and of the scan. (Depths within
+    // the window of the other chain's are kept untested: only the work depends on that.)
+    let reach = [depths(kq.d), depths(kp.d)];
+    let dead = |pass: usize, (t, d): (f64, f64)| {
+        let (lo, hi) = reach[pass];
+        (d < lo - w || d > hi + w) && lens.apart((t, d), (t, t), reach[pass], u2)
+    };
+    let count = |live: Option<&[Live; 2]>| {
+        let (mut coarse, mut whole) = (0usize, tried);
+        for pass in 0..2 {
+            let (kx, ky) = sides(pass);
+            let mut window = Window::default();
+            for (&t, &d) in kx.t.iter().zip(kx.d) {
+                let span = Span::of(window.around(t, ky.t, w), ky.t.len());
+                if dead(pass, (t, d)) {
+                    continue;
+                }
+                let met = span.blocks(BLOCK * GROUP);
+                coarse += live.map_or(met.len(), |l| l[pass].count(met));
+                whole += span.es.len() + if pass == 0 { span.vs.len() } else { 0 };
+            }
         }
+        (coarse, whole)
+    };
+    let (mut coarse, whole) = count(None);
+    // Windows wider than the chains (a small polygon facing a wide bowl as far away as it is
+    // wide): the other chain's coarse blocks whose depths are certainly farther than the best from
+    // every depth of the own chain are left out too, of the count and of the scan.
+    let mut live = None;
+    if coarse > budget {
+        let l = [
+            Live::of(kq.d, reach[1], lens, u2),
+            Live::of(kp.d, reach[0], lens, u2),
+        ];
+        coarse = count(Some(&l)).0;
+        live = Some(l);
     }
     if coarse > budget {
         return None;
     }
     // Windows of a few candidates a vertex (saw-teeth: about three and a half) are taken whole:
     // blocks and keys would cost more than they save.
-    let blocks = (whole > SPARSE * (np + nq)).then(|| [Blocks::of(q, kq), Blocks::of(p, kp)]);
+    let blocks = (whole > SPARSE * (np + nq)).then(|| {
+        let [lq, lp] = live.map_or([None, None], |[lq, lp]| [Some(lq), Some(lp)]);
+        [Blocks::of(q, kq).with(lq), Blocks::of(p, kp).with(lp)]
+    });
     // Vertex `x` of the pass's own chain.
     let own = |pass: usize, x: usize| if pass == 0 { p.at(x) } else { q.at(x) };
     // The parts of the current window to try, reused from vertex to vertex.
@@ -1137,6 +1181,24 @@ pub(crate) fn scan_windowed<K: Kernel, C: Points + ?Sized>(
         let mine = if pass == 0 { p } else { q };
         for (x, (&t, &d)) in kx.t.iter().zip(kx.d).enumerate() {
             let span = Span::of(window.around(t, ky.t, w), ky.t.len());
+            done += 1;
+            if dead(pass, (t, d)) {
+                // A team is formed at its first member, for the members that are not left out.
+                if let (Some(by), 0) = (by, x % TEAM) {
+                    let members = x..(x + TEAM).min(kx.t.len());
+                    if !members.clone().all(|m| dead(pass, (kx.t[m], kx.d[m]))) {
+                        team.at(
+                            by,
+                            mine,
+                            (x, (span.vs.start, span.vs.end)),
+                            (kx, ky.t),
+                            lens,
+                            (w, u2),
+                        );
+                    }
+                }
+                continue;
+            }
             match by {
                 Some(by) => {
                     let near = team.at(
@@ -1155,7 +1217,6 @@ pub(crate) fn scan_windowed<K: Kernel, C: Points + ?Sized>(
                 ahead += es.len() + if pass == 0 { vs.len() } else { 0 };
                 plan[pass].push((x, k, vs, es));
             }
-            done += 1;
             let heading = done % EXTRAPOLATE == 0
                 && (ahead - tried).saturating_mul(np + nq) > budget.saturating_mul(done);
             if ahead > budget || heading {
@@ -1182,6 +1243,9 @@ pub(crate) fn scan_windowed<K: Kernel, C: Points + ?Sized>(
         let ((kx, ky), by) = (sides(pass), blocks.as_ref().map(|b| &b[pass]));
         let mut window = Window::default();
         for (x, (&t, &d)) in kx.t.iter().zip(kx.d).enumerate() {
+            if dead(pass, (t, d)) {
+                continue;
+            }
             let u2 = best.u2();
             let span = Span::of(window.around(t, ky.t, lens.window(u2)), ky.t.len());
             let Some(by) = by else {
@@ -1314,6 +1378,33 @@ impl<'a, K: Kernel, const INTERIOR_ONLY: bool, C: Points + ?Sized, const BOUNDS_
         if b.0 <= self.u2() {
             self.take(c, b);
         }
+    }
+
+    /// Local descent from a vertex–vertex best over `np × nq` vertex pairs: while a neighbouring
+    /// pair (one index moved by one) is strictly nearer, move there; at most `steps` moves.
+    /// The candidates tried.
+    fn descend(&mut self, np: usize, nq: usize, steps: usize) -> usize {
+        let mut tried = 0;
+        for _ in 0..steps {
+            let Cand::Vv(i, j) = self.best else { break };
+            let at = self.best;
+            for c in [
+                (i > 0).then(|| Cand::Vv(i - 1, j)),
+                (i + 1 < np).then(|| Cand::Vv(i + 1, j)),
+                (j > 0).then(|| Cand::Vv(i, j - 1)),
+                (j + 1 < nq).then(|| Cand::Vv(i, j + 1)),
+            ]
+            .into_iter()
+            .flatten()
+            {
+                self.consider(c);
+                tried += 1;
+            }
+            if self.best == at {
+                break;
+            }
+        }
+        tried
     }
 
     /// Takes `c`, with bounds `b` not above [`Best::u2`], when it is nearer than the best: when
@@ -1530,6 +1621,8 @@ struct Blocks<'a, C: ?Sized> {
     fine: Boxes<'a, C>,
     coarse: Boxes<'a, C>,
     wide: Boxes<'a, C>,
+    /// The coarse blocks not left out, when some are ([`Live`]).
+    live: Option<Live>,
 }
 
 impl<'a, C: Points + ?Sized> Blocks<'a, C> {
@@ -1538,7 +1631,27 @@ impl<'a, C: Points + ?Sized> Blocks<'a, C> {
             fine: Boxes::of(c, k, BLOCK),
             coarse: Boxes::of(c, k, BLOCK * GROUP),
             wide: Boxes::of(c, k, BLOCK * GROUP * GROUP),
+            live: None,
         }
+    }
+
+    /// The same blocks, those left out by `live` skipped.
+    fn with(self, live: Option<Live>) -> Self {
+        Blocks { live, ..self }
+    }
+
+    /// The coarse blocks of `r` not left out, in order: `O(1)` each, and `O(1)` for none.
+    #[inline(always)]
+    fn live(&self, r: Range<usize>) -> impl Iterator<Item = usize> + '_ {
+        let mut at = r.start;
+        std::iter::from_fn(move || {
+            if at >= r.end {
+                return None;
+            }
+            let c = self.live.as_ref().map_or(at, |l| l.next[at]);
+            at = c + 1;
+            (c < r.end).then_some(c)
+        })
     }
 
     /// Pushes onto `near` the coarse blocks of `span` (a team's joint window) not certainly
@@ -1565,15 +1678,19 @@ impl<'a, C: Points + ?Sized> Blocks<'a, C> {
             }
         };
         if coarse.len() <= WIDE {
-            coarse.for_each(in_coarse);
+            self.live(coarse).for_each(in_coarse);
             return;
         }
-        for w in span.blocks(BLOCK * GROUP * GROUP) {
+        // The wide blocks holding a coarse block not left out.
+        let mut from = coarse.start;
+        while let Some(c) = self.live(from..coarse.end).next() {
+            let w = c / GROUP;
             let within = (w * GROUP).max(coarse.start)..((w + 1) * GROUP).min(coarse.end);
+            from = within.end;
             if within.len() > 2 && self.wide.beyond(w, v, x, lens, u2) {
                 continue;
             }
-            within.for_each(&mut in_coarse);
+            self.live(within).for_each(&mut in_coarse);
         }
     }
 
@@ -1597,19 +1714,19 @@ impl<'a, C: Points + ?Sized> Blocks<'a, C> {
         let fine = span.blocks(BLOCK);
         let coarse = span.blocks(BLOCK * GROUP);
         let Some((near, covered)) = team else {
-            for c in coarse {
+            for c in self.live(coarse) {
                 self.in_coarse(c, (span, &fine), vx, lens, u2, out);
             }
             return;
         };
-        for c in coarse.start..coarse.end.min(covered.start) {
+        for c in self.live(coarse.start..coarse.end.min(covered.start)) {
             self.in_coarse(c, (span, &fine), vx, lens, u2, out);
         }
         let from = near.partition_point(|&c| c < coarse.start);
         for &c in near[from..].iter().take_while(|&&c| c < coarse.end) {
             self.in_coarse(c, (span, &fine), vx, lens, u2, out);
         }
-        for c in coarse.start.max(covered.end)..coarse.end {
+        for c in self.live(coarse.start.max(covered.end)..coarse.end) {
             self.in_coarse(c, (span, &fine), vx, lens, u2, out);
         }
     }
@@ -1636,6 +1753,48 @@ impl<'a, C: Points + ?Sized> Blocks<'a, C> {
                 out.push((Some(k), vs, es));
             }
         }
+    }
+}
+
+/// The coarse blocks ([`BLOCK`]` · `[`GROUP`] vertices, as [`Boxes`] takes them) of a chain of
+/// computed depths `d` that [`scan_windowed`] keeps: those whose depths are not certainly farther
+/// than `√u2` from every depth of the other chain (`reach`, its least and greatest). A point of a
+/// block left out is farther than `√u2` from every point of the other chain (Lagrange's identity,
+/// as for any box of keys: the gap across the line alone bounds the distance), so no candidate of
+/// it can beat a best of upper bound `√u2`, nor any later, nearer best.
+struct Live {
+    /// `prefix[c]`: the blocks kept before block `c`.
+    prefix: Vec<usize>,
+    /// `next[c]`: the first block kept at or after `c` (the block count when none).
+    next: Vec<usize>,
+}
+
+impl Live {
+    fn of(d: &[f64], reach: (f64, f64), lens: &Lens, u2: f64) -> Live {
+        let size = BLOCK * GROUP;
+        let count = d.len().div_ceil(size);
+        let kept: Vec<bool> = (0..count)
+            .map(|c| {
+                let (first, last) = (c * size, ((c + 1) * size).min(d.len() - 1));
+                let (lo, hi) = depths(&d[first..=last]);
+                !lens.beyond(0.0, lens.gap(reach, (lo, hi)), u2)
+            })
+            .collect();
+        let mut prefix = Vec::with_capacity(count + 1);
+        prefix.push(0);
+        for &k in &kept {
+            prefix.push(prefix[prefix.len() - 1] + usize::from(k));
+        }
+        let mut next = vec![count; count + 1];
+        for c in (0..count).rev() {
+            next[c] = if kept[c] { c } else { next[c + 1] };
+        }
+        Live { prefix, next }
+    }
+
+    /// The blocks of `r` kept.
+    fn count(&self, r: Range<usize>) -> usize {
+        self.prefix[r.end] - self.prefix[r.start]
     }
 }
 

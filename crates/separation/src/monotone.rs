@@ -912,6 +912,75 @@ mod tests {
         }
     }
 
+    /// The sweep where the windows along the line hold both chains whole (chains a few units
+    /// long, a clearance as large) and only depth thins them: vertices whose depth is farther than
+    /// the best from every depth of the other chain, and the other chain's coarse blocks likewise,
+    /// are left out of the count and of the scan: section 3's pair, exactly. Monotone chains of 15,000 to 19,000 vertices
+    /// along lattice directions, each a slab with one tooth towards the line (two to eight units
+    /// deep, on a quarter grid or not), the teeth facing each other, or one of them flat: their windows meet more coarse blocks than the budget
+    /// allows, the blocks kept fit it.
+    #[test]
+    fn depth_cuts_keep_section_3s_answer() {
+        use polydist_predicates::Robust;
+        use std::cmp::Ordering;
+        let mut rng = SplitMix64::new(0xdee9);
+        for round in 0..6 {
+            let (a, d, perp) = lattice_line(&mut rng);
+            let float = round % 2 == 1;
+            // The teeth face each other, up to a tenth apart along the line.
+            let tip = 0.2 + rng.unit_f64() * 1.6;
+            // Both toothed, or one of them flat (so that all of it is near the other's tooth).
+            let flat = round % 3;
+            let chain = |rng: &mut SplitMix64, side: f64| -> Vec<DVec2> {
+                let n = 15_000 + rng.index(4000);
+                // A tooth at `tip` towards the line, `swing` deep and `2·swing/slope` wide.
+                let (swing, tip, slope) = (
+                    if flat == (side > 0.0) as usize + 1 {
+                        0.0
+                    } else {
+                        2.0 + rng.index(7) as f64
+                    },
+                    tip + rng.unit_f64() * 0.1,
+                    1.0 + rng.index(8) as f64,
+                );
+                let gap = [0.5, 1.0, 2.0][rng.index(3)];
+                let mut c: Vec<DVec2> = (0..n)
+                    .map(|i| {
+                        let s = 2.0 * i as f64 / n as f64;
+                        let h = swing * ((s - tip).abs() * slope).min(1.0);
+                        let h = if float { h } else { (h * 4.0).round() / 4.0 };
+                        a + d * s + perp * (side * (gap + h))
+                    })
+                    .collect();
+                c.dedup();
+                c
+            };
+            let (p, q) = (chain(&mut rng, 1.0), chain(&mut rng, -1.0));
+            let (w, tried) = keyed::<Robust>(&p, &q, a, a + d, f64::INFINITY)
+                .unwrap_or_else(|| panic!("round {round}: declined"));
+            // Section 3's matrices: exact, linear.
+            let s3 = crate::sigma::separation_of_chains_with::<Robust>(
+                &p,
+                &q,
+                a,
+                a + d,
+                crate::sigma::ChainMethod::Matrices,
+            )
+            .expect("chains across the line");
+            let (got, want) = (
+                winner_dist(&p, &q, w.features()),
+                winner_dist(&p, &q, (s3.pair.feature_p, s3.pair.feature_q)),
+            );
+            assert_eq!(
+                Robust::cmp_dist2(got, want),
+                Ordering::Equal,
+                "round {round}: {a:?} {d:?}"
+            );
+            let n = p.len() + q.len();
+            assert!(tried <= 8 * n, "round {round}: {tried} candidates for {n}");
+        }
+    }
+
     /// Every key is within `E` of the exact `t(v)` and `d(v)`, a pair the window leaves out is
     /// farther apart along the line than `U·|b − a|` (squared: `(t(y) − t(x))² > U²·|b − a|²`,
     /// exactly), and a vertex and a vertex, an edge or a box of several vertices that

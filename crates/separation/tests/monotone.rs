@@ -800,7 +800,11 @@ fn zigzags(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
 /// vertex is within about `10^−8` of the clearance from every cluster vertex, so no depth or block
 /// test can thin the windows, which hold the whole arc.
 fn cluster_and_arc(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
-    let s = 2f64.powi(-30);
+    zigzag_under_arc(n, 2f64.powi(-30))
+}
+
+/// [`cluster_and_arc`] with the zigzag's vertices `s` apart.
+fn zigzag_under_arc(n: usize, s: f64) -> (Vec<DVec2>, Vec<DVec2>) {
     let mut p = vec![DVec2::new(-1.0, -3.0), DVec2::new(1.0, -3.0)];
     p.extend(
         (0..n)
@@ -904,6 +908,59 @@ fn crowded_windows_exhaust_the_budget() {
     );
     assert_eq!(near_route, Route::MonotoneSweep);
     agrees_with_section3(&p2, &q2, &near);
+}
+
+/// Windows wider than the chains, thinned by depth alone (the vertices, and the other chain's
+/// coarse blocks, whose depths are farther than the best from all of the other chain's are left
+/// out of the count): a zigzag 0.6 wide facing the arc around it (clearance 0.89, the zigzag's
+/// ends to the arc's, more than either chain's extent along the line) is swept, and so are two
+/// stars a unit apart with a notch facing a tip (the envelope sweep: the envelopes' windows hold
+/// the whole facing sides). Both used to exhaust the budget at these sizes and go to section 3's
+/// matrices; both are as near as those, with a few candidates a vertex.
+#[test]
+fn depth_thins_windows_wider_than_the_chains() {
+    let (p, q) = zigzag_under_arc(16_384, 0.6 / 16_384.0);
+    let (sp, sq) = (
+        SimplePolygon::try_new(&p).unwrap(),
+        SimplePolygon::try_new(&q).unwrap(),
+    );
+    let h = 16_384;
+    let star = |c: DVec2, turn: f64| -> Vec<DVec2> {
+        (0..h)
+            .map(|k| {
+                let a = std::f64::consts::TAU * k as f64 / h as f64 + turn;
+                c + DVec2::new(a.cos(), a.sin()) * if k % 2 == 0 { 1.0 } else { 0.5 }
+            })
+            .collect()
+    };
+    let turn = std::f64::consts::PI + std::f64::consts::TAU / h as f64;
+    let (a, b) = (star(DVec2::ZERO, 0.0), star(DVec2::new(3.0, 0.0), turn));
+    let (sa, sb) = (
+        SimplePolygon::try_new(&a).unwrap(),
+        SimplePolygon::try_new(&b).unwrap(),
+    );
+    for ((p, q), (sp, sq), wanted) in [
+        ((&p, &q), (&sp, &sq), Route::MonotoneSweep),
+        ((&a, &b), (&sa, &sb), Route::EnvelopeSweep),
+    ] {
+        let Ok(PolygonSeparation::Separated { pair, route, stats }) =
+            separation_of_disjoint::<Robust>(sp, sq)
+        else {
+            panic!("disjoint")
+        };
+        let n = p.len() + q.len();
+        eprintln!(
+            "{wanted:?}: {} candidates for {n} vertices, σ = {}",
+            stats.sweep_candidates, pair.distance
+        );
+        assert_eq!(route, wanted);
+        assert!(
+            stats.sweep_candidates <= 4 * n,
+            "{}",
+            stats.sweep_candidates
+        );
+        agrees_with_section3(p, q, &pair);
+    }
 }
 
 /// The pair `pair` found for `p` and `q` is as near as section 3's (exact squared distances of
