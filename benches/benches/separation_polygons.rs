@@ -28,6 +28,14 @@
 //!   spikes, so some subproblems go to section 3 on clipped chains (Step G), trimmed by the best
 //!   answer and by their distance to the separator. Up to a million vertices (the stars' directions
 //!   come from a wider lattice range beyond 131,072, `interlocked_stars`).
+//! - `polygons/stars_lid`: two stars (radii 1 and 1/2) one unit apart, a notch of one facing a tip
+//!   of the other (the hulls' nearest features a tip and a lid): the envelope sweep, whose windows
+//!   along the line hold whole facing sides, thinned by depth;
+//! - `polygons/bowl`: a zigzag 0.6 wide facing an arc of radius 1 around it (the bottom of a
+//!   cap), clearance 0.89: the monotone sweep, its windows thinned by depth alone;
+//! - `polygons/cluster`: the same zigzag `2⁻³⁰` per vertex wide: every pair within a hair of the
+//!   clearance, so nothing prunes: section 3's matrices answer, and parry's BVH visits every pair
+//!   (timed up to 4,096 only).
 //!
 //! - `polylines/toolpath`: an open polyline (the tooth profile of the mirrored saw-tooth slab, `N/2`
 //!   vertices, tips opposite notches `1/4` away) against the saw-tooth slab (`N/2` vertices):
@@ -63,8 +71,8 @@ use parry2d_f64::math::{Pose, Vector};
 use parry2d_f64::query;
 use parry2d_f64::shape::Polyline;
 use polydist_benches::{
-    hooked_teeth, interlocked_combs, interlocked_combs_jittered, interlocked_spirals,
-    interlocked_stars, pocket, sawteeth,
+    bowl, cluster, hooked_teeth, interlocked_combs, interlocked_combs_jittered,
+    interlocked_spirals, interlocked_stars, pocket, sawteeth, stars_lid,
 };
 use polydist_oracle::SplitMix64;
 use polydist_polygon::SimplePolygon;
@@ -164,6 +172,17 @@ fn query<K: Kernel>(p: &SimplePolygon, q: &SimplePolygon) -> f64 {
 }
 
 fn run(c: &mut Criterion, name: &str, make: fn(usize) -> (Vec<DVec2>, Vec<DVec2>), max_n: usize) {
+    run_capped(c, name, make, (max_n, usize::MAX));
+}
+
+/// [`run`] with parry2d timed up to `parry_max` vertices only (where its BVH prunes nothing, a
+/// query is quadratic: 12 s at 32,768 on the crowded cluster).
+fn run_capped(
+    c: &mut Criterion,
+    name: &str,
+    make: fn(usize) -> (Vec<DVec2>, Vec<DVec2>),
+    (max_n, parry_max): (usize, usize),
+) {
     // The set-up (inputs, and the brute force, geo and parry checked against us) costs minutes in all:
     // `POLYDIST_BENCH_ONLY=<part of a group name>` skips the other families entirely.
     if std::env::var("POLYDIST_BENCH_ONLY").is_ok_and(|only| !name.contains(only.as_str())) {
@@ -181,7 +200,9 @@ fn run(c: &mut Criterion, name: &str, make: fn(usize) -> (Vec<DVec2>, Vec<DVec2>
         let d = query::<Robust>(&p, &q);
         let rel = |x: f64| ((x - d) / d).abs();
         let (pp, pq) = (polyline(&a), polyline(&b));
-        assert!(rel(parry(&pp, &pq)) < 1e-9, "{name} n={n}: parry disagrees");
+        if n <= parry_max {
+            assert!(rel(parry(&pp, &pq)) < 1e-9, "{name} n={n}: parry disagrees");
+        }
         if n <= SMALL_MAX {
             let brute = polygon_separation_brute::<Robust>(&p, &q)
                 .expect("valid")
@@ -252,6 +273,9 @@ fn run(c: &mut Criterion, name: &str, make: fn(usize) -> (Vec<DVec2>, Vec<DVec2>
             group.bench_with_input(BenchmarkId::new("geo", n), &(ga, gb), |bch, (p, q)| {
                 bch.iter(|| Euclidean.distance(black_box(p), black_box(q)))
             });
+        }
+        if n > parry_max {
+            continue;
         }
         group.bench_with_input(
             BenchmarkId::new("parry_query", n),
@@ -393,6 +417,10 @@ fn benches() {
     // Up to 131,072: its subproblems go to section 3 since 2026-11-26 (docs/algorithms/separator.md);
     // a million vertices is timed by `examples/separation_profile` instead.
     run(&mut c, "polygons/pocket", pocket, 131_072);
+    run(&mut c, "polygons/stars_lid", stars_lid, usize::MAX);
+    run(&mut c, "polygons/bowl", bowl, usize::MAX);
+    // Up to 131,072 (section 3's matrices: 0.5 s a Robust query there); parry up to 4,096.
+    run_capped(&mut c, "polygons/cluster", cluster, (131_072, 4096));
     polylines(&mut c);
     c.final_summary();
 }

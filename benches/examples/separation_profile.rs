@@ -7,15 +7,17 @@
 //! star in a C's pocket, the containing case), `spir` (two interlocked spiral arms), `istar` (two random stars
 //! pushed into each other), `saw` (saw-teeth tip to notch, the monotone sweep), `hook` (hooked
 //! saw-teeth tip to notch: facing chains not monotone, section 3), `dec` (the tied
-//! combs scaled by 0.1: decimal coordinates, whose ties the error-free stage cannot settle), and kernels any of `r` (Robust), `s` (Robust, section 3's matrices only), `f` (Fast), `g` (geo's
+//! combs scaled by 0.1: decimal coordinates, whose ties the error-free stage cannot settle), `lid`
+//! (two stars a unit apart, a notch facing a tip), `bowl` (a zigzag facing an arc around it, farther
+//! than either is wide) and `cluster` (the same zigzag a hair wide: section 3's matrices), and kernels any of `r` (Robust), `s` (Robust, section 3's matrices only), `f` (Fast), `g` (geo's
 //! distance, once per run, for sizes its criterion series skips) and `p` (parry2d-f64's build of both
 //! polylines and its query) (default `combs 131072 5 rf`).
 //! Figures only; the benchmarks are the reference.
 
 use glam::DVec2;
 use polydist_benches::{
-    hooked_teeth, interlocked_combs, interlocked_combs_jittered, interlocked_spirals,
-    interlocked_stars, pocket, sawteeth,
+    bowl, cluster, hooked_teeth, interlocked_combs, interlocked_combs_jittered,
+    interlocked_spirals, interlocked_stars, pocket, sawteeth, stars_lid,
 };
 use polydist_polygon::SimplePolygon;
 use polydist_predicates::{Fast, Robust};
@@ -35,6 +37,9 @@ fn main() {
         "istar" => interlocked_stars(n),
         "saw" => sawteeth(n),
         "hook" => hooked_teeth(n),
+        "lid" => stars_lid(n),
+        "bowl" => bowl(n),
+        "cluster" => cluster(n),
         "dec" => {
             let (a, b) = interlocked_combs(n);
             let s = |v: Vec<DVec2>| v.into_iter().map(|p| p * 0.1).collect();

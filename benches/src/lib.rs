@@ -131,3 +131,58 @@ pub fn hooked_teeth(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
 pub fn sawteeth(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
     polydist_oracle::sawteeth_facing((n / 4).max(1))
 }
+
+/// Two stars of `n/2` vertices each (radii 1 and 1/2 alternating), one unit apart: the second
+/// is turned by half a spike, so that a notch of it faces a tip of the first and the hulls' nearest
+/// features are a tip and a lid. Wider than the gap: every window along the separating line
+/// holds the whole facing side.
+pub fn stars_lid(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
+    let h = (n / 2).max(8);
+    let star = |c: DVec2, turn: f64| -> Vec<DVec2> {
+        (0..h)
+            .map(|k| {
+                let a = TAU * k as f64 / h as f64 + turn;
+                c + DVec2::new(a.cos(), a.sin()) * if k % 2 == 0 { 1.0 } else { 0.5 }
+            })
+            .collect()
+    };
+    (
+        star(DVec2::ZERO, 0.0),
+        star(DVec2::new(3.0, 0.0), TAU / 2.0 + TAU / h as f64),
+    )
+}
+
+/// A zigzag of `n/2` vertices `width` wide along `y = 0` (on top of a triangle below it) facing an
+/// arc of `n/2` vertices of radius 1 around the origin, from 120° to 60° (the bottom of a cap).
+pub fn zigzag_under_arc(n: usize, width: f64) -> (Vec<DVec2>, Vec<DVec2>) {
+    let h = (n / 2).max(8);
+    let s = width / h as f64;
+    let mut p = vec![DVec2::new(-1.0, -3.0), DVec2::new(1.0, -3.0)];
+    p.extend(
+        (0..h)
+            .rev()
+            .map(|i| DVec2::new((i as f64 - h as f64 / 2.0) * s, (i % 2) as f64 * s / 4.0)),
+    );
+    let mut q: Vec<DVec2> = (0..h)
+        .map(|i| {
+            let a = (120.0 - 60.0 * i as f64 / (h - 1) as f64).to_radians();
+            DVec2::new(a.cos(), a.sin())
+        })
+        .collect();
+    q.push(DVec2::new(0.5, 3.0));
+    q.push(DVec2::new(-0.5, 3.0));
+    (p, q)
+}
+
+/// [`zigzag_under_arc`] 0.6 wide: the clearance (the zigzag's ends to the arc's, 0.89) exceeds
+/// both chains' extents along the line, so the windows hold everything and only depth thins them.
+pub fn bowl(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
+    zigzag_under_arc(n, 0.6)
+}
+
+/// [`zigzag_under_arc`] `2⁻³⁰` per vertex wide (`n = 131,072`: `6·10⁻⁵`): every arc vertex is
+/// within a hair of the clearance from every zigzag vertex. No box of keys, and no bounding box,
+/// rules out anything.
+pub fn cluster(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
+    zigzag_under_arc(n, 2f64.powi(-30) * (n / 2).max(8) as f64)
+}
