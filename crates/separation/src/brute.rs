@@ -1182,33 +1182,27 @@ pub(crate) fn scan_windowed<K: Kernel, C: Points + ?Sized>(
         for (x, (&t, &d)) in kx.t.iter().zip(kx.d).enumerate() {
             let span = Span::of(window.around(t, ky.t, w), ky.t.len());
             done += 1;
-            if dead(pass, (t, d)) {
-                // A team is formed at its first member, for the members that are not left out.
-                if let (Some(by), 0) = (by, x % TEAM) {
-                    let members = x..(x + TEAM).min(kx.t.len());
-                    if !members.clone().all(|m| dead(pass, (kx.t[m], kx.d[m]))) {
-                        team.at(
-                            by,
-                            mine,
-                            (x, (span.vs.start, span.vs.end)),
-                            (kx, ky.t),
-                            lens,
-                            (w, u2),
-                        );
-                    }
-                }
+            let out = dead(pass, (t, d));
+            // A team is formed at its first member, for the members not left out (if any).
+            let unformed = out
+                && x % TEAM == 0
+                && (x..(x + TEAM).min(kx.t.len())).all(|m| dead(pass, (kx.t[m], kx.d[m])));
+            let near = match by {
+                Some(by) if !unformed => team.at(
+                    by,
+                    mine,
+                    (x, (span.vs.start, span.vs.end)),
+                    (kx, ky.t),
+                    lens,
+                    (w, u2),
+                ),
+                _ => None,
+            };
+            if out {
                 continue;
             }
             match by {
                 Some(by) => {
-                    let near = team.at(
-                        by,
-                        mine,
-                        (x, (span.vs.start, span.vs.end)),
-                        (kx, ky.t),
-                        lens,
-                        (w, u2),
-                    );
                     by.survivors(&span, (own(pass, x), (t, d)), lens, u2, near, &mut kept);
                 }
                 None => kept.push((None, span.vs, span.es)),
