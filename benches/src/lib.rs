@@ -152,26 +152,12 @@ pub fn stars_lid(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
     )
 }
 
-/// A zigzag of `n/2` vertices `width` wide along `y = 0` (on top of a triangle below it) facing an
-/// arc of `n/2` vertices of radius 1 around the origin, from 120° to 60° (the bottom of a cap).
+/// [`polydist_oracle::zigzag_under_arc`] with `n/2` vertices a chain, `width` wide: a zigzag
+/// along `y = 0` (on top of a triangle below it) facing an arc of radius 1 around the origin, from
+/// 120° to 60° (the bottom of a cap).
 pub fn zigzag_under_arc(n: usize, width: f64) -> (Vec<DVec2>, Vec<DVec2>) {
     let h = (n / 2).max(8);
-    let s = width / h as f64;
-    let mut p = vec![DVec2::new(-1.0, -3.0), DVec2::new(1.0, -3.0)];
-    p.extend(
-        (0..h)
-            .rev()
-            .map(|i| DVec2::new((i as f64 - h as f64 / 2.0) * s, (i % 2) as f64 * s / 4.0)),
-    );
-    let mut q: Vec<DVec2> = (0..h)
-        .map(|i| {
-            let a = (120.0 - 60.0 * i as f64 / (h - 1) as f64).to_radians();
-            DVec2::new(a.cos(), a.sin())
-        })
-        .collect();
-    q.push(DVec2::new(0.5, 3.0));
-    q.push(DVec2::new(-0.5, 3.0));
-    (p, q)
+    polydist_oracle::zigzag_under_arc(h, width / h as f64)
 }
 
 /// [`zigzag_under_arc`] 0.6 wide: the clearance (the zigzag's ends to the arc's, 0.89) exceeds

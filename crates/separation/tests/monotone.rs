@@ -12,7 +12,7 @@
 use glam::DVec2;
 use polydist_oracle::{
     Contact, SplitMix64, boundary_distance, contact_status_convex, feature_sq_dist,
-    hooked_teeth_facing, sawteeth_facing, star,
+    hooked_teeth_facing, sawteeth_facing, star, zigzag_under_arc,
 };
 use polydist_polygon::SimplePolygon;
 use polydist_polygon::predicates::{Exact, Fast, Kernel, Orientation, Robust, Sign};
@@ -801,25 +801,6 @@ fn zigzags(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
 /// test can thin the windows, which hold the whole arc.
 fn cluster_and_arc(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
     zigzag_under_arc(n, 2f64.powi(-30))
-}
-
-/// [`cluster_and_arc`] with the zigzag's vertices `s` apart.
-fn zigzag_under_arc(n: usize, s: f64) -> (Vec<DVec2>, Vec<DVec2>) {
-    let mut p = vec![DVec2::new(-1.0, -3.0), DVec2::new(1.0, -3.0)];
-    p.extend(
-        (0..n)
-            .rev()
-            .map(|i| DVec2::new((i as f64 - n as f64 / 2.0) * s, (i % 2) as f64 * s / 4.0)),
-    );
-    let mut q: Vec<DVec2> = (0..n)
-        .map(|i| {
-            let a = (120.0 - 60.0 * i as f64 / (n - 1) as f64).to_radians();
-            DVec2::new(a.cos(), a.sin())
-        })
-        .collect();
-    q.push(DVec2::new(0.5, 3.0));
-    q.push(DVec2::new(-0.5, 3.0));
-    (p, q)
 }
 
 /// σ by the route and by the brute force: the same exact distance of their features.

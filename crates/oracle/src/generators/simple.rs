@@ -530,6 +530,36 @@ fn facing_mirror(p: Vec<DVec2>) -> (Vec<DVec2>, Vec<DVec2>) {
     (p, q)
 }
 
+/// A zigzag of `h` vertices `s` apart along `y = 0` (every other one `s/4` up), centred on the
+/// origin, on top of a triangle below it, and the bottom of a cap: an arc of `h` vertices of radius
+/// 1 around the origin, from 120° to 60°, closed above. The hulls are disjoint and their closest
+/// features are the zigzag's top and the arc's chord (a lid). The clearance is from the zigzag's
+/// ends to the arc's, about `√(1 − x + x²)` for the half-width `x = s·h/2`, and every zigzag
+/// vertex is within `1 ± x` of every arc vertex: a hair-wide zigzag (`s = 2⁻³⁰`) puts them all
+/// within a hair of the clearance; a wide one (`s·h = 0.6`: clearance 0.89) makes the clearance
+/// exceed both chains' extents along the separating line.
+///
+/// # Panics
+/// Panics if `h` < 2.
+pub fn zigzag_under_arc(h: usize, s: f64) -> (Vec<DVec2>, Vec<DVec2>) {
+    assert!(h >= 2, "at least two vertices a chain");
+    let mut p = vec![DVec2::new(-1.0, -3.0), DVec2::new(1.0, -3.0)];
+    p.extend(
+        (0..h)
+            .rev()
+            .map(|i| DVec2::new((i as f64 - h as f64 / 2.0) * s, (i % 2) as f64 * s / 4.0)),
+    );
+    let mut q: Vec<DVec2> = (0..h)
+        .map(|i| {
+            let a = (120.0 - 60.0 * i as f64 / (h - 1) as f64).to_radians();
+            DVec2::new(a.cos(), a.sin())
+        })
+        .collect();
+    q.push(DVec2::new(0.5, 3.0));
+    q.push(DVec2::new(-0.5, 3.0));
+    (p, q)
+}
+
 /// Two saw-tooth slabs facing each other: [`sawtooth`]`(t)` and its mirror image `x ↦ 10.25 − x`
 /// moved up by one, so that tips face notches `1/4` beyond the tips (counter-clockwise, exact). The
 /// convex hulls are disjoint and their closest features are lids.
