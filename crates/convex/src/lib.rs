@@ -26,7 +26,7 @@
 //! - [`min_vertex_distance`] / [`min_vertex_distance_with`]: the nearest pair of *vertices*, McKenna and
 //!   Toussaint (1985), `O(m + n)` for disjoint polygons (`O((m + n) log(m + n))` otherwise), with its
 //!   brute-force twin [`min_vertex_distance_brute`].
-//! - [`hausdorff`], [`directed_hausdorff`], [`cmmr`], [`per_vertex_distances`] (and their `_with`
+//! - [`hausdorff`](fn@hausdorff), [`directed_hausdorff`], [`cmmr`], [`per_vertex_distances`] (and their `_with`
 //!   and `_brute` forms, [`hausdorff_squared_exact`]): Hausdorff and CMMR distances of filled convex
 //!   polygons in `O(n + m)` (Atallah 1983; Atallah, Ribeiro, Lifschitz 1991), disjoint or not, and
 //!   [`boundary_crossings`]: where `∂P` enters and leaves `Q`, kept symbolic (the intersection structure

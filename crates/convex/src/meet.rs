@@ -22,7 +22,7 @@ use crate::pair::{at, caller_on_edge, caller_vertex};
 use crate::result::{Closest, Separation};
 
 /// Whether two convex polygons (points and segments included) meet, and how: the answer of
-/// [`contact`](crate::contact) and [`contact_with`](crate::contact_with).
+/// [`contact`](fn@crate::contact) and [`contact_with`](crate::contact_with).
 ///
 /// The cases are those of [`Separation`] without the closest pair: with relative interiors
 /// (`relint(point) = the point`, `relint(segment) = the open segment`, `relint(polygon) = its open

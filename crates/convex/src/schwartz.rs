@@ -407,7 +407,7 @@ pub(crate) fn closest_candidate<K: Kernel>(p: &[DVec2], q: &[DVec2]) -> Option<P
 /// `O(log² N)` exact predicates for disjoint polygons, `N = n + m` (`O(log N)` ranked steps of one
 /// `O(log N)` extreme search each; Schwartz's bucket table, which would make the expected cost
 /// `O(log N)` on random angles, is not built). Meeting polygons cost `O(log n + log m)` more (the
-/// contact test [`contact_with`](crate::contact_with)).
+/// contact test [`contact_with`]).
 ///
 /// # Examples
 /// ```

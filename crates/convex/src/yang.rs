@@ -16,7 +16,7 @@
 //!   an exact kernel the answer is always optimal.
 //! - The Theorem-1 certificate (`O(1)` exact tests) stays as a safety net: under Robust and Exact it
 //!   fails only when the polygons meet; then the `O(log)` exact contact test
-//!   ([`contact_with`](crate::contact_with)) classifies them. Under an inexact kernel a failed
+//!   ([`contact_with`]) classifies them. Under an inexact kernel a failed
 //!   certificate is followed by reseeded searches; a disjoint pair on which they all failed goes to
 //!   Schwartz's `O(log² N)` search, and only an answer that fails the certificate there too to the
 //!   brute force (these fallbacks never run under Robust or Exact on disjoint input: tested).
@@ -323,7 +323,7 @@ pub(crate) fn candidate<K: Kernel>(pp: &ConvexPolygon, qq: &ConvexPolygon) -> Op
 /// The search (Yang et al. 2006 rebuilt with exact predicates, on a proved initial bracket: see the
 /// crate docs) returns a candidate pair; Theorem 1 certifies it with `O(1)` exact tests. Under an exact
 /// kernel the candidate of disjoint polygons is proved optimal, so the certificate fails only when the
-/// polygons meet, and the exact `O(log)` contact test [`contact_with`](crate::contact_with) then
+/// polygons meet, and the exact `O(log)` contact test [`contact_with`] then
 /// classifies them. Under an inexact kernel a failed certificate triggers up to two reseeded searches,
 /// then the contact test; if that says disjoint, Schwartz's search answers
 /// ([`distance_schwartz_with`](crate::distance_schwartz_with), certified the same way), and the brute

@@ -12,7 +12,7 @@
 //! - poses bodies ([`Motion::pose_at`]) and bounds the relative speed of any boundary point of a
 //!   pair over an interval ([`relative_speed_bound`], Schwartz 1981 §1 with its erratum);
 //! - plans ([`plan`]: one job per pair, effects merged, static pairs once; an all-pairs query with
-//!   `within` is streamed, never one job per pair) and runs ([`run`]):
+//!   `within` is streamed, never one job per pair) and runs ([`run`](fn@run)):
 //!   `distance` and `closest_points` share one convex distance query (Yang 2006, `O(log n + log m)`,
 //!   with temporal coherence), `vertex_distance` is McKenna–Toussaint (`O(n + m)`), `first_contact`
 //!   is conservative advancement (Schwartz 1981) with a bracket confirmed by the exact intersection
@@ -34,7 +34,7 @@
 //! # Numbers
 //! Posed polygons are rounded coordinates: every decision is exact for them (under the Robust and
 //! Exact kernels). `first_contact` certificates also cover the gap between the rounded and the exact
-//! poses (see [`run`]'s module docs in the source and docs/scene-format.md).
+//! poses (see the `run` module's docs in the source and docs/scene-format.md).
 //!
 //! # Examples
 //! ```

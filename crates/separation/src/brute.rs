@@ -1,6 +1,6 @@
 //! Brute-force twins: test references and benchmark baselines, never the main path; and the
-//! candidate scans the separator runs on its small subproblems ([`scan`] and [`scan_pruned`] with
-//! `interior_only`), which add an exact pre-filter ([`bounds`]) to the same answer.
+//! candidate scans the separator runs on its small subproblems ([`scan`] and
+//! [`scan_pruned_winner_below`] with `interior_only`), which add an exact pre-filter ([`bounds`]) to the same answer.
 
 use core::cell::OnceCell;
 use core::cmp::Ordering;
@@ -690,7 +690,7 @@ pub(crate) fn scan_winner_below<K: Kernel>(p: &[DVec2], q: &[DVec2], cut: f64) -
     scan_winner_below_except::<K>(p, q, cut, Seen::NONE)
 }
 
-/// [`scan_winner_below`] without the candidates of `seen`, pairs an earlier scan already took
+/// `scan_winner_below` without the candidates of `seen`, pairs an earlier scan already took
 /// (see [`Seen`]): the winner is then the nearest pair of the others when that is strictly nearer
 /// than `√cut`, and some pair of the chains otherwise. Every candidate left out has both features
 /// in `seen`'s ranges, so a caller that folds the two scans' winners finds the same minimum.
@@ -782,7 +782,7 @@ fn scan_best<K: Kernel>(
     }
 }
 
-/// A node of [`scan_pruned`]'s box hierarchy over a chain: it owns the vertices `s..e` and the
+/// A node of `scan_pruned`'s box hierarchy over a chain: it owns the vertices `s..e` and the
 /// edges starting at them (edge `k` joins `k` and `k + 1`), and its box holds every vertex from `s`
 /// to `e` (the far end of its last edge) included.
 struct BoxNode {
@@ -882,7 +882,7 @@ pub(crate) fn scan_pruned<K: Kernel>(p: &[DVec2], q: &[DVec2], interior_only: bo
         .pair(p, q)
 }
 
-/// [`scan_winner_below`] with [`scan_pruned`]'s exact pruning, which also skips the pairs of boxes
+/// `scan_winner_below` (a test reference) with the exact pruning of `scan_pruned` (another), which also skips the pairs of boxes
 /// certainly farther apart than `√cut` (their candidates cannot beat `cut`). With `near`, the box
 /// nodes whose
 /// points are all certainly farther from `l_i` than the best candidate so far (or than `√cut`)
@@ -1069,7 +1069,7 @@ impl Window {
 /// than a sixty-fourth), so the boxes are not tested twice ([`run_plan`], which tests each edge's
 /// foot before its keys when the count kept more than [`FOOT_FIRST`] candidates a vertex). With a
 /// finite `cut` (the square of a distance known elsewhere), candidates bounded strictly above it
-/// are skipped and the windows are never wider than for `cut`, as in [`scan_winner_below`]: the
+/// are skipped and the windows are never wider than for `cut`, as in `scan_winner_below`: the
 /// winner is the nearest pair when that is strictly nearer than the
 /// known distance, some pair of the chains otherwise.
 ///

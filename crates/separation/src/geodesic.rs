@@ -47,7 +47,7 @@ pub enum Hit {
 /// Dual-tree path between a triangle at `s` and a triangle at `t` (breadth-first search over the
 /// triangles), then the funnel algorithm over the diagonals crossed (Lee–Preparata 1984;
 /// Hershberger–Snoeyink 1994 §2), deciding with exact orientations only. `tri` must be a
-/// triangulation of `ring` (from [`triangulate`](crate::triangulate)).
+/// triangulation of `ring` (from [`triangulate`](fn@crate::triangulate)).
 ///
 /// # Complexity
 /// `O(n)` time and predicates.

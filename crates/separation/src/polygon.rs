@@ -247,7 +247,7 @@ pub fn separation<K: Kernel>(
 /// from the origin, and that edge is a hull edge at one of the two closest features); then the
 /// monotone sweep when both facing chains are monotone along the line ([`Route::MonotoneSweep`]),
 /// else section 3 ([`separation_of_chains_with`](crate::separation_of_chains_with) with
-/// [`ChainMethod::Auto`](crate::ChainMethod::Auto): its envelope sweep, [`Route::EnvelopeSweep`],
+/// [`ChainMethod::Auto`]: its envelope sweep, [`Route::EnvelopeSweep`],
 /// then its matrices, [`Route::SeparableChains`]) on the two whole boundaries, each passed as the
 /// closed chain `v_0, …, v_{n−1}, v_0` of its internal vertices. Features are mapped back to the
 /// caller's.
@@ -288,12 +288,12 @@ pub fn separation_of_disjoint<K: Kernel>(
 pub enum HullRouteMethod {
     /// The monotone sweep ([`Route::MonotoneSweep`]) when both facing chains are monotone along the
     /// line and its budget of `96N + 1024` candidates holds; otherwise section 3 with its envelope
-    /// sweep first ([`ChainMethod::Auto`](crate::ChainMethod::Auto), [`Route::EnvelopeSweep`]),
+    /// sweep first ([`ChainMethod::Auto`], [`Route::EnvelopeSweep`]),
     /// and its matrices when that declines.
     #[default]
     Auto,
     /// Section 3's matrices always ([`Route::SeparableChains`],
-    /// [`ChainMethod::Matrices`](crate::ChainMethod::Matrices)): the paper's algorithm alone, for
+    /// [`ChainMethod::Matrices`]): the paper's algorithm alone, for
     /// comparison.
     Section3,
 }
@@ -501,7 +501,7 @@ pub(crate) fn caller_feature<K: Kernel>(p: &SimplePolygon, f: Feature, other: DV
 
 /// [`separation`] by brute force, for testing: [`SimplePolygon::first_boundary_contact_brute`] and
 /// the point locations, then every vertex–vertex and vertex–edge pair of the two boundaries
-/// ([`separation_brute`](crate::separation_brute) on the closed chains). Polygons whose hulls meet are
+/// ([`separation_brute`] on the closed chains). Polygons whose hulls meet are
 /// answered too.
 ///
 /// # Errors

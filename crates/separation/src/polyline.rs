@@ -36,7 +36,7 @@ use crate::simple_distance::segment_to_polygon;
 /// [`separation_brute`](crate::separation_brute) answers it in `O(nm)`.
 ///
 /// A polyline of two vertices is a segment and goes to
-/// [`segment_to_polygon`](crate::segment_to_polygon), which answers every position ([`Route::Scan`],
+/// [`segment_to_polygon`], which answers every position ([`Route::Scan`],
 /// or [`PolygonSeparation::Intersecting`]).
 ///
 /// Edge `i` of `T` joins its vertices `i` and `i + 1`; repeated consecutive vertices are dropped

@@ -1,5 +1,5 @@
 //! Amato's separator `S(P, Q)` for two disjoint simple polygons whose convex hulls meet (N. M.
-//! Amato, UIUC report UILU-ENG-92-2248, 1992, section 2; the construction of [A92] is only cited
+//! Amato, UIUC report UILU-ENG-92-2248, 1992, section 2; the construction of \[A92\] is only cited
 //! there: this is the reconstruction of `docs/algorithms/separator.md`): the non-containing case,
 //! the pinched channel, and the containing case (one polygon in a pocket of the other, see
 //! [`regions`]).
