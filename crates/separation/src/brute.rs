@@ -1,6 +1,7 @@
 //! Brute-force twins: test references and benchmark baselines, never the main path; and the
 //! candidate scans the separator runs on its small subproblems ([`scan`] and
-//! [`scan_pruned_winner_below`] with `interior_only`), which add an exact pre-filter ([`bounds`]) to the same answer.
+//! [`scan_pruned_winner_below`] with `interior_only`), which add an exact pre-filter
+//! ([`bounds`]) to the same answer.
 
 use core::cell::OnceCell;
 use core::cmp::Ordering;
@@ -882,12 +883,12 @@ pub(crate) fn scan_pruned<K: Kernel>(p: &[DVec2], q: &[DVec2], interior_only: bo
         .pair(p, q)
 }
 
-/// `scan_winner_below` (a test reference) with the exact pruning of `scan_pruned` (another), which also skips the pairs of boxes
-/// certainly farther apart than `√cut` (their candidates cannot beat `cut`). With `near`, the box
-/// nodes whose
-/// points are all certainly farther from `l_i` than the best candidate so far (or than `√cut`)
-/// are skipped as well: the winner is then no farther than every pair with both points within its
-/// own length of `l_i` that beats `cut`, and some pair of the chains otherwise.
+/// `scan_winner_below` (a test reference) with the exact pruning of `scan_pruned` (another),
+/// which also skips the pairs of boxes certainly farther apart than `√cut` (their candidates
+/// cannot beat `cut`). With `near`, the box nodes whose points are all certainly farther from
+/// `l_i` than the best candidate so far (or than `√cut`) are skipped as well: the winner is then
+/// no farther than every pair with both points within its own length of `l_i` that beats `cut`,
+/// and some pair of the chains otherwise.
 pub(crate) fn scan_pruned_winner_below<K: Kernel>(
     p: &[DVec2],
     q: &[DVec2],
@@ -1064,8 +1065,8 @@ impl Window {
 /// at once. A vertex whose depth is certainly farther than `U` from every depth of the other
 /// chain is left out of the count and the scan, and so, when the blocks met still exceed the
 /// budget, are the other chain's coarse blocks whose depths are ([`Live`]: windows wider than the
-/// chains, where only depth thins them). When that count ran, its blocks are the ones tried (a block kept for the count's best
-/// is kept for any later, nearer best; it is tested again only once the best has fallen by more
+/// chains, where only depth thins them). When that count ran, its blocks are the ones tried (a
+/// block kept for the count's best is kept for any later, nearer best; it is tested again only once the best has fallen by more
 /// than a sixty-fourth), so the boxes are not tested twice ([`run_plan`], which tests each edge's
 /// foot before its keys when the count kept more than [`FOOT_FIRST`] candidates a vertex). With a
 /// finite `cut` (the square of a distance known elsewhere), candidates bounded strictly above it
@@ -1767,21 +1768,21 @@ impl Live {
     fn of(d: &[f64], reach: (f64, f64), lens: &Lens, u2: f64) -> Live {
         let size = BLOCK * GROUP;
         let count = d.len().div_ceil(size);
-        let kept: Vec<bool> = (0..count)
-            .map(|c| {
-                let (first, last) = (c * size, ((c + 1) * size).min(d.len() - 1));
-                let (lo, hi) = depths(&d[first..=last]);
-                !lens.beyond(0.0, lens.gap(reach, (lo, hi)), u2)
-            })
-            .collect();
         let mut prefix = Vec::with_capacity(count + 1);
         prefix.push(0);
-        for &k in &kept {
-            prefix.push(prefix[prefix.len() - 1] + usize::from(k));
+        for c in 0..count {
+            let (first, last) = (c * size, ((c + 1) * size).min(d.len() - 1));
+            let kept = !lens.beyond(0.0, lens.gap(reach, depths(&d[first..=last])), u2);
+            prefix.push(prefix[c] + usize::from(kept));
         }
+        // Block `c` is kept when the prefix steps after it.
         let mut next = vec![count; count + 1];
         for c in (0..count).rev() {
-            next[c] = if kept[c] { c } else { next[c + 1] };
+            next[c] = if prefix[c + 1] > prefix[c] {
+                c
+            } else {
+                next[c + 1]
+            };
         }
         Live { prefix, next }
     }
