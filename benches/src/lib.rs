@@ -132,24 +132,11 @@ pub fn sawteeth(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
     polydist_oracle::sawteeth_facing((n / 4).max(1))
 }
 
-/// Two stars of `n/2` vertices each (radii 1 and 1/2 alternating), one unit apart: the second
-/// is turned by half a spike, so that a notch of it faces a tip of the first and the hulls' nearest
-/// features are a tip and a lid. Wider than the gap: every window along the separating line
-/// holds the whole facing side.
+/// [`polydist_oracle::stars_notch_facing_tip`] with about `n/2` vertices a star (rounded up to
+/// even), one unit apart, a notch facing a tip. Wider than the gap: every window along the
+/// separating line holds the whole facing side.
 pub fn stars_lid(n: usize) -> (Vec<DVec2>, Vec<DVec2>) {
-    let h = (n / 2).max(8);
-    let star = |c: DVec2, turn: f64| -> Vec<DVec2> {
-        (0..h)
-            .map(|k| {
-                let a = TAU * k as f64 / h as f64 + turn;
-                c + DVec2::new(a.cos(), a.sin()) * if k % 2 == 0 { 1.0 } else { 0.5 }
-            })
-            .collect()
-    };
-    (
-        star(DVec2::ZERO, 0.0),
-        star(DVec2::new(3.0, 0.0), TAU / 2.0 + TAU / h as f64),
-    )
+    polydist_oracle::stars_notch_facing_tip(((n / 2).max(8) + 1) & !1)
 }
 
 /// [`polydist_oracle::zigzag_under_arc`] with `n/2` vertices a chain, `width` wide: a zigzag

@@ -109,7 +109,7 @@ pub use crate::generators::rng::SplitMix64;
 pub use crate::generators::simple::{
     CombPair, PocketLid, PocketPair, comb, hooked_sawtooth, hooked_teeth_facing, interleaved_combs,
     interleaved_combs_ulps, pocket_around, pocket_pair, sawteeth_facing, sawtooth, spiral, star,
-    star_in_range, two_opt, zigzag_under_arc,
+    star_in_range, stars_notch_facing_tip, two_opt, zigzag_under_arc,
 };
 pub use crate::hard::{HardAnswers, SimpleHardAnswers};
 pub use crate::hausdorff::{

@@ -12,7 +12,7 @@
 use glam::DVec2;
 use polydist_oracle::{
     Contact, SplitMix64, boundary_distance, contact_status_convex, feature_sq_dist,
-    hooked_teeth_facing, sawteeth_facing, star, zigzag_under_arc,
+    hooked_teeth_facing, sawteeth_facing, star, stars_notch_facing_tip, zigzag_under_arc,
 };
 use polydist_polygon::SimplePolygon;
 use polydist_polygon::predicates::{Exact, Fast, Kernel, Orientation, Robust, Sign};
@@ -905,17 +905,7 @@ fn depth_thins_windows_wider_than_the_chains() {
         SimplePolygon::try_new(&p).unwrap(),
         SimplePolygon::try_new(&q).unwrap(),
     );
-    let h = 16_384;
-    let star = |c: DVec2, turn: f64| -> Vec<DVec2> {
-        (0..h)
-            .map(|k| {
-                let a = std::f64::consts::TAU * k as f64 / h as f64 + turn;
-                c + DVec2::new(a.cos(), a.sin()) * if k % 2 == 0 { 1.0 } else { 0.5 }
-            })
-            .collect()
-    };
-    let turn = std::f64::consts::PI + std::f64::consts::TAU / h as f64;
-    let (a, b) = (star(DVec2::ZERO, 0.0), star(DVec2::new(3.0, 0.0), turn));
+    let (a, b) = stars_notch_facing_tip(16_384);
     let (sa, sb) = (
         SimplePolygon::try_new(&a).unwrap(),
         SimplePolygon::try_new(&b).unwrap(),

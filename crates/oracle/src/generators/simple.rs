@@ -530,6 +530,32 @@ fn facing_mirror(p: Vec<DVec2>) -> (Vec<DVec2>, Vec<DVec2>) {
     (p, q)
 }
 
+/// Two stars of `h` vertices each (radii 1 and 1/2 alternating, a tip at angle 0), centred 3
+/// apart on the `x`-axis: the second is turned by a half-turn and one vertex step, so that one of
+/// its notches faces a tip of the first one unit away, and the hulls' nearest features are a tip
+/// and a lid (no facing chain is monotone along the separating line).
+///
+/// # Panics
+/// Panics if `h` is odd or below 8.
+pub fn stars_notch_facing_tip(h: usize) -> (Vec<DVec2>, Vec<DVec2>) {
+    assert!(
+        h >= 8 && h % 2 == 0,
+        "an even number of vertices, at least 8"
+    );
+    let star = |c: DVec2, turn: f64| -> Vec<DVec2> {
+        (0..h)
+            .map(|k| {
+                let a = TAU * k as f64 / h as f64 + turn;
+                c + DVec2::new(a.cos(), a.sin()) * if k % 2 == 0 { 1.0 } else { 0.5 }
+            })
+            .collect()
+    };
+    (
+        star(DVec2::ZERO, 0.0),
+        star(DVec2::new(3.0, 0.0), TAU / 2.0 + TAU / h as f64),
+    )
+}
+
 /// A zigzag of `h` vertices `s` apart along `y = 0` (every other one `s/4` up), centred on the
 /// origin, on top of a triangle below it, and the bottom of a cap: an arc of `h` vertices of radius
 /// 1 around the origin, from 120° to 60°, closed above. The hulls are disjoint and their closest
