@@ -3,7 +3,7 @@
 //! [`scan_pruned_winner_below`] with `interior_only`), which add an exact pre-filter
 //! ([`bounds`]) to the same answer.
 
-use core::cell::OnceCell;
+use core::cell::{Cell, OnceCell};
 use core::cmp::Ordering;
 use core::ops::Range;
 
@@ -1057,15 +1057,19 @@ impl Window {
 /// candidates a vertex; on a star whose tips all face a zigzag wall tilted against the line within
 /// a hair of the clearance, a few dozen.
 ///
-/// The answer is the nearest pair of the chains (ties to the first found), or `None` once more
-/// than `budget` candidates have been tried: the count is what the caller bounds the work by. After
-/// the first pass the work for the best so far is counted before any candidate is evaluated: the
-/// blocks the windows meet (their ends moved alone, `O(n_p + n_q)`), then, when those fit the
-/// budget, the candidates of the blocks not skipped whole; when either exceeds the budget, `None`
-/// at once. A vertex whose depth is certainly farther than `U` from every depth of the other
-/// chain is left out of the count and the scan, and so, when the blocks met still exceed the
-/// budget, are the other chain's coarse blocks whose depths are ([`Live`]: windows wider than the
-/// chains, where only depth thins them). When that count ran, its blocks are the ones tried (a
+/// The answer is the nearest pair of the chains (ties to the first found) and the candidates
+/// tried, or, once more than `budget` candidates have been tried, `Err` with the work counted so
+/// far: the count is what the caller bounds the work by. After the first pass the work for the
+/// best so far is counted before any candidate is evaluated: the coarse blocks the windows meet
+/// (their ends moved alone, `O(n_p + n_q)`), then the candidates of the blocks not skipped whole;
+/// when those exceed the budget, `Err` at once. A vertex whose depth is certainly farther than `U`
+/// from every depth of the other chain is left out of the count and the scan, and so, when the
+/// blocks met exceed the budget, are the other chain's coarse blocks whose depths are ([`Live`]:
+/// windows wider than the chains, where only depth thins them). When the blocks met exceed the
+/// budget even so, the box tests are counted with the candidates instead (each block met costs at
+/// most nine of them otherwise), and the count gives up when the two together exceed it: a
+/// zigzag facing a wide bowl meets a constant share of the bowl's blocks from every vertex, and
+/// its teams' wide boxes rule out nearly all of them. When that count ran, its blocks are the ones tried (a
 /// block kept for the count's best is kept for any later, nearer best; it is tested again only once the best has fallen by more
 /// than a sixty-fourth), so the boxes are not tested twice ([`run_plan`], which tests each edge's
 /// foot before its keys when the count kept more than [`FOOT_FIRST`] candidates a vertex). With a
@@ -1084,7 +1088,7 @@ pub(crate) fn scan_windowed<K: Kernel, C: Points + ?Sized>(
     lens: &Lens,
     cut: f64,
     budget: usize,
-) -> Option<(Winner, usize)> {
+) -> Result<(Winner, usize), usize> {
     let (np, nq) = (p.count(), q.count());
     if np == 0
         || nq == 0
@@ -1093,7 +1097,7 @@ pub(crate) fn scan_windowed<K: Kernel, C: Points + ?Sized>(
         || kp.d.len() != np
         || kq.d.len() != nq
     {
-        return None;
+        return Err(0);
     }
     let mut best = Best::<K, true, C>::new(p, q, cut);
     let mut tried = 0usize;
@@ -1155,9 +1159,12 @@ pub(crate) fn scan_windowed<K: Kernel, C: Points + ?Sized>(
         coarse = count(Some(&l)).0;
         live = Some(l);
     }
-    if coarse > budget {
-        return None;
-    }
+    // Windows that meet more coarse blocks than the budget even so (a zigzag facing a bowl of a
+    // million vertices: both ends of the bowl within reach of the whole zigzag) may still rule out
+    // nearly all of them by their boxes, a team's wide blocks first. The count then goes on, the
+    // box tests themselves counted as candidates are, and gives up when the two together run
+    // beyond the budget: the count costs `O(n_p + n_q)` besides what it counts either way.
+    let tested = coarse > budget;
     // Windows of a few candidates a vertex (saw-teeth: about three and a half) are taken whole:
     // blocks and keys would cost more than they save.
     let blocks = (whole > SPARSE * (np + nq)).then(|| {
@@ -1199,23 +1206,26 @@ pub(crate) fn scan_windowed<K: Kernel, C: Points + ?Sized>(
                 ),
                 _ => None,
             };
-            if out {
-                continue;
-            }
-            match by {
-                Some(by) => {
-                    by.survivors(&span, (own(pass, x), (t, d)), lens, u2, near, &mut kept);
+            if !out {
+                match by {
+                    Some(by) => {
+                        by.survivors(&span, (own(pass, x), (t, d)), lens, u2, near, &mut kept);
+                    }
+                    None => kept.push((None, span.vs, span.es)),
                 }
-                None => kept.push((None, span.vs, span.es)),
+                for (k, vs, es) in kept.drain(..) {
+                    ahead += es.len() + if pass == 0 { vs.len() } else { 0 };
+                    plan[pass].push((x, k, vs, es));
+                }
             }
-            for (k, vs, es) in kept.drain(..) {
-                ahead += es.len() + if pass == 0 { vs.len() } else { 0 };
-                plan[pass].push((x, k, vs, es));
-            }
+            let work = match (tested, blocks.as_ref()) {
+                (true, Some([bq, bp])) => ahead + bq.tests() + bp.tests(),
+                _ => ahead,
+            };
             let heading = done % EXTRAPOLATE == 0
-                && (ahead - tried).saturating_mul(np + nq) > budget.saturating_mul(done);
-            if ahead > budget || heading {
-                return None;
+                && (work - tried).saturating_mul(np + nq) > budget.saturating_mul(done);
+            if work > budget || heading {
+                return Err(work);
             }
         }
     }
@@ -1232,7 +1242,7 @@ pub(crate) fn scan_windowed<K: Kernel, C: Points + ?Sized>(
             u2,
             foot_first,
         );
-        return Some((best.best.winner(p, q), tried));
+        return Ok((best.best.winner(p, q), tried));
     }
     for pass in 0..2 {
         let ((kx, ky), by) = (sides(pass), blocks.as_ref().map(|b| &b[pass]));
@@ -1246,7 +1256,7 @@ pub(crate) fn scan_windowed<K: Kernel, C: Points + ?Sized>(
             let Some(by) = by else {
                 tried += best.span(pass, x, (span.vs, span.es), |_, _| false);
                 if tried > budget {
-                    return None;
+                    return Err(tried);
                 }
                 continue;
             };
@@ -1255,11 +1265,11 @@ pub(crate) fn scan_windowed<K: Kernel, C: Points + ?Sized>(
                 tried += best.span(pass, x, (vs, es), |item, u2| ky.far(item, (t, d), lens, u2));
             }
             if tried > budget {
-                return None;
+                return Err(tried);
             }
         }
     }
-    Some((best.best.winner(p, q), tried))
+    Ok((best.best.winner(p, q), tried))
 }
 
 /// The candidates of [`scan_windowed`]'s count (`plan`, for the best of upper bound `√u2` it
@@ -1554,6 +1564,8 @@ struct Boxes<'a, C: ?Sized> {
     d: Vec<(f64, f64)>,
     /// Built when first needed: most blocks never get past the line's box.
     chords: Vec<OnceCell<Option<Chord>>>,
+    /// The box tests made so far ([`Boxes::beyond`] calls).
+    tests: Cell<usize>,
 }
 
 impl<'a, C: Points + ?Sized> Boxes<'a, C> {
@@ -1579,6 +1591,7 @@ impl<'a, C: Points + ?Sized> Boxes<'a, C> {
             t,
             d,
             chords,
+            tests: Cell::new(0),
         }
     }
 
@@ -1603,6 +1616,7 @@ impl<'a, C: Points + ?Sized> Boxes<'a, C> {
     /// `x` with keys `(t, d)`: by the line's box, then by the chord's.
     #[inline]
     fn beyond(&self, k: usize, x: DVec2, (t, d): (f64, f64), lens: &Lens, u2: f64) -> bool {
+        self.tests.set(self.tests.get() + 1);
         lens.apart((t, d), self.t[k], self.d[k], u2)
             || self.chords[k]
                 .get_or_init(|| self.chord(k))
@@ -1633,6 +1647,11 @@ impl<'a, C: Points + ?Sized> Blocks<'a, C> {
     /// The same blocks, those left out by `live` skipped.
     fn with(self, live: Option<Live>) -> Self {
         Blocks { live, ..self }
+    }
+
+    /// The box tests made so far, at every level.
+    fn tests(&self) -> usize {
+        self.fine.tests.get() + self.coarse.tests.get() + self.wide.tests.get()
     }
 
     /// The coarse blocks of `r` not left out, in order: `O(1)` each, and `O(1)` for none.
@@ -2599,5 +2618,75 @@ mod tests {
             assert_eq!(cmp_scan::<Robust>(x, y), exact, "{x:?} vs {y:?}");
         }
         assert!(claimed > 8_000, "{claimed} of {images} images claimed");
+    }
+
+    /// Windows that meet more coarse blocks than the budget, most of them ruled out by their
+    /// boxes: a zigzag 0.6 wide facing an arc of radius 1 around it (the clearance, 0.89, exceeds
+    /// both chains' extents along the line, so every window holds the whole arc). The blocks met
+    /// exceed the budget (counted from below here: those whose first vertex is within the
+    /// clearance of a zigzag vertex on both keys), yet the box tests and candidates fit it: the
+    /// scan answers, with section 3's distance. With a budget below the box tests it declines,
+    /// having counted them; and a zigzag a hair wide (every arc vertex within a hair of the
+    /// clearance from every zigzag vertex, nothing ruled out) declines early, its work held to
+    /// the budget.
+    #[test]
+    fn box_tests_count_when_the_blocks_met_exceed_the_budget() {
+        use crate::monotone::keys;
+        use crate::sigma::{ChainMethod, separation_of_chains_with};
+        let h = 16_384;
+        let (a, b) = (DVec2::new(0.0, 0.5), DVec2::new(1.0, 0.5));
+        let chains = |s: f64| {
+            let (p, q) = polydist_oracle::zigzag_under_arc(h, s);
+            // The zigzag left to right (after the two corners below it), the arc as it is.
+            let zig: Vec<DVec2> = p[2..].iter().rev().copied().collect();
+            (zig, q[..h].to_vec())
+        };
+        let (zig, arc) = chains(0.6 / h as f64);
+        let (kp, kq, lens) = keys(&zig, &arc, a, b).expect("finite keys");
+        let (kx, ky) = (Keys { t: &kp.0, d: &kp.1 }, Keys { t: &kq.0, d: &kq.1 });
+        let s3 = separation_of_chains_with::<Robust>(&zig, &arc, a, b, ChainMethod::Matrices)
+            .expect("chains across the line");
+        let sigma = s3.pair.distance * (1.0 - 1e-9);
+        let size = BLOCK * GROUP;
+        let met: usize = (0..h)
+            .map(|x| {
+                (0..h.div_ceil(size))
+                    .filter(|c| {
+                        let y = c * size;
+                        (ky.t[y] - kx.t[x]).abs() <= sigma && (ky.d[y] - kx.d[x]).abs() <= sigma
+                    })
+                    .count()
+            })
+            .sum();
+        let budget = 100_000;
+        assert!(met > 2 * budget, "{met} blocks met");
+        let scan = |zig: &[DVec2], arc: &[DVec2], kx, ky, lens, budget| {
+            scan_windowed::<Robust, [DVec2]>(zig, arc, kx, ky, lens, f64::INFINITY, budget)
+        };
+        let (w, tried) = scan(&zig, &arc, kx, ky, &lens, budget).expect("within the budget");
+        let dist = |(f, g): (Feature, Feature)| match (f, g) {
+            (Feature::Vertex(i), Feature::Vertex(j)) => Dist2::PointPoint(zig[i], arc[j]),
+            (Feature::Vertex(i), Feature::Edge(j)) => {
+                Dist2::PointSegment(zig[i], arc[j], arc[j + 1])
+            }
+            (Feature::Edge(i), Feature::Vertex(j)) => {
+                Dist2::PointSegment(arc[j], zig[i], zig[i + 1])
+            }
+            (Feature::Edge(_), Feature::Edge(_)) => panic!("no vertex in {f:?}, {g:?}"),
+        };
+        let want = dist((s3.pair.feature_p, s3.pair.feature_q));
+        assert_eq!(Robust::cmp_dist2(dist(w.features()), want), Ordering::Equal);
+        assert!(tried <= budget, "{tried}");
+        // Room for the candidates but not the box tests (some 18,000 here): declined, the tests
+        // counted.
+        let low = tried + 4_000;
+        let work = scan(&zig, &arc, kx, ky, &lens, low).expect_err("beyond the budget");
+        assert!((low..low + 16 * 2 * h).contains(&work), "{work} for {low}");
+        // A hair wide: nothing ruled out, declined with the work held to the budget.
+        let (zig, arc) = chains(2f64.powi(-30));
+        let (kp, kq, lens) = keys(&zig, &arc, a, b).expect("finite keys");
+        let (kx, ky) = (Keys { t: &kp.0, d: &kp.1 }, Keys { t: &kq.0, d: &kq.1 });
+        let work = scan(&zig, &arc, kx, ky, &lens, budget).expect_err("beyond the budget");
+        assert!(work <= budget + 16 * 2 * h, "{work}");
     }
 }

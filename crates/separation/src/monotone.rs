@@ -103,8 +103,9 @@ pub(crate) fn monotone_sweep_polyline<K: Kernel>(
 /// dozen instructions (its `f64` bounds, rarely an exact sign), section 3 some 17,000 to 20,000 a
 /// vertex on the inputs measured, so even a sweep that runs out first wastes a small share; and
 /// crowded windows are found before any candidate is tried ([`scan_windowed`]). Box tests of
-/// blocks are not candidates: the coarse blocks the windows meet are held to the same budget, and
-/// each costs at most nine box tests.
+/// blocks are not candidates: the coarse blocks the windows meet are held to the same budget (each
+/// costs at most nine box tests), or, when they exceed it, the box tests themselves, counted with
+/// the candidates.
 pub(crate) fn budget(n: usize) -> usize {
     96 * n + 1024
 }
@@ -196,7 +197,8 @@ pub(crate) fn sweep_envelopes<K: Kernel>(
         &lens,
         cut,
         budget(n),
-    )?;
+    )
+    .ok()?;
     // Visible vertex `i` of `x` against envelope edge `k` of `y` (`P`'s edge when `p_side`).
     let ve = |x: &Prepared, i: usize, y: &Prepared, k: usize, p_side: bool| {
         let e = y.env_edge(k)?;
@@ -225,7 +227,7 @@ fn keyed<K: Kernel>(
 ) -> Option<(Winner, usize)> {
     let (kp, kq, lens) = keys(fp, fq, a, b)?;
     let (kp, kq) = (Keys { t: &kp.0, d: &kp.1 }, Keys { t: &kq.0, d: &kq.1 });
-    scan_windowed::<K, [DVec2]>(fp, fq, kp, kq, &lens, cut, budget(fp.len() + fq.len()))
+    scan_windowed::<K, [DVec2]>(fp, fq, kp, kq, &lens, cut, budget(fp.len() + fq.len())).ok()
 }
 
 /// How the chain `c` runs along the line through `a` and `b`: `Some(false)` when `t` never
