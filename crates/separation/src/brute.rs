@@ -1057,26 +1057,26 @@ impl Window {
 /// candidates a vertex; on a star whose tips all face a zigzag wall tilted against the line within
 /// a hair of the clearance, a few dozen.
 ///
-/// The answer is the nearest pair of the chains (ties to the first found) and the candidates
-/// tried, or, once more than `budget` candidates have been tried, `Err` with the work counted so
-/// far: the count is what the caller bounds the work by. After the first pass the work for the
-/// best so far is counted before any candidate is evaluated: the coarse blocks the windows meet
-/// (their ends moved alone, `O(n_p + n_q)`), then the candidates of the blocks not skipped whole;
-/// when those exceed the budget, `Err` at once. A vertex whose depth is certainly farther than `U`
-/// from every depth of the other chain is left out of the count and the scan, and so, when the
-/// blocks met exceed the budget, are the other chain's coarse blocks whose depths are ([`Live`]:
-/// windows wider than the chains, where only depth thins them). When the blocks met exceed the
-/// budget even so, the box tests are counted with the candidates instead (each block met costs at
-/// most nine of them otherwise), and the count gives up when the two together exceed it: a
-/// zigzag facing a wide bowl meets a constant share of the bowl's blocks from every vertex, and
-/// its teams' wide boxes rule out nearly all of them. When that count ran, its blocks are the ones tried (a
-/// block kept for the count's best is kept for any later, nearer best; it is tested again only once the best has fallen by more
-/// than a sixty-fourth), so the boxes are not tested twice ([`run_plan`], which tests each edge's
-/// foot before its keys when the count kept more than [`FOOT_FIRST`] candidates a vertex). With a
-/// finite `cut` (the square of a distance known elsewhere), candidates bounded strictly above it
-/// are skipped and the windows are never wider than for `cut`, as in `scan_winner_below`: the
-/// winner is the nearest pair when that is strictly nearer than the
-/// known distance, some pair of the chains otherwise.
+/// The answer is the nearest pair of the chains (ties to the first found) and the candidates tried,
+/// or `Err` with the work counted so far once that exceeds `budget`: the count is what the caller
+/// bounds the work by. After the first pass the work for the best so far is counted before any
+/// candidate is evaluated: the coarse blocks the windows meet (their ends moved alone, `O(n_p +
+/// n_q)`), then the candidates of the blocks not skipped whole; when those exceed the budget, `Err`
+/// at once. A vertex whose depth is certainly farther than `U` from every depth of the other chain
+/// is left out of the count and the scan, and so, when the blocks met exceed the budget, are the
+/// other chain's coarse blocks whose depths are ([`Live`]: windows wider than the chains, where
+/// only depth thins them). When the blocks met exceed the budget even so, the box tests are counted
+/// with the candidates instead (each block met costs at most nine of them otherwise), and the count
+/// gives up when the two together exceed it: a zigzag facing a wide bowl meets a constant share of
+/// the bowl's blocks from every vertex, and its teams' wide boxes rule out nearly all of them. When
+/// that count ran, its blocks are the ones tried (a block kept for the count's best is kept for any
+/// later, nearer best; it is tested again only once the best has fallen by more than a
+/// sixty-fourth), so the boxes are not tested twice ([`run_plan`], which tests each edge's foot
+/// before its keys when the count kept more than [`FOOT_FIRST`] candidates a vertex). With a finite
+/// `cut` (the square of a distance known elsewhere), candidates bounded strictly above it are
+/// skipped and the windows are never wider than for `cut`, as in `scan_winner_below`: the winner is
+/// the nearest pair when that is strictly nearer than the known distance, some pair of the chains
+/// otherwise.
 ///
 /// # Complexity
 /// `O(n_p + n_q + budget)` key comparisons, bounds and exact tests.
@@ -2688,5 +2688,95 @@ mod tests {
         let (kx, ky) = (Keys { t: &kp.0, d: &kp.1 }, Keys { t: &kq.0, d: &kq.1 });
         let work = scan(&zig, &arc, kx, ky, &lens, budget).expect_err("beyond the budget");
         assert!(work <= budget + 16 * 2 * h, "{work}");
+    }
+
+    /// Any budget, from none to more than the windows hold: the windowed scan either answers with
+    /// the exact scan's nearest pair or declines, on a zigzag facing an arc around it (random
+    /// widths, from a hair to wider than the arc, random radii and arcs, ties on a dyadic grid or
+    /// not) and on two dyadic corridors. Budgets below the first pass, below the blocks met, below
+    /// the box tests or the candidates, and above them all are all drawn.
+    #[test]
+    fn any_budget_answers_exactly_or_declines() {
+        use crate::monotone::keys;
+        let mut rng = SplitMix64::new(0xb0d9);
+        let (a, b) = (DVec2::new(0.0, -0.25), DVec2::new(1.0, -0.25));
+        let (mut answered, mut declined) = (0usize, 0usize);
+        for round in 0..400 {
+            let (n, m) = (40 + rng.index(500), 40 + rng.index(500));
+            let dyadic = |v: f64| (v * 1024.0).round() / 1024.0;
+            let (p, q): (Vec<DVec2>, Vec<DVec2>) = if round % 4 < 3 {
+                let width = [2f64.powi(-30), 0.05, 0.6, 1.5][rng.index(4)];
+                let (r, from) = (0.5 + rng.unit_f64() * 1.5, 10.0 + rng.unit_f64() * 70.0);
+                let p = (0..n)
+                    .map(|i| {
+                        let x = (i as f64 / (n - 1) as f64 - 0.5) * width;
+                        DVec2::new(
+                            x,
+                            if i % 2 == 0 {
+                                0.0
+                            } else {
+                                -width / (4.0 * n as f64)
+                            },
+                        )
+                    })
+                    .collect();
+                let q = (0..m)
+                    .map(|j| {
+                        let a = (180.0 - from - (180.0 - 2.0 * from) * j as f64 / (m - 1) as f64)
+                            .to_radians();
+                        let v = DVec2::new(a.cos(), a.sin()) * r;
+                        if round % 2 == 0 {
+                            DVec2::new(dyadic(v.x), dyadic(v.y))
+                        } else {
+                            v
+                        }
+                    })
+                    .collect();
+                (p, q)
+            } else {
+                let wall = |rng: &mut SplitMix64, k: usize, side: f64| -> Vec<DVec2> {
+                    (0..k)
+                        .map(|i| {
+                            DVec2::new(i as f64 / 64.0, side * (0.5 + rng.below(4) as f64 / 8.0))
+                        })
+                        .collect()
+                };
+                (wall(&mut rng, n, -1.0), wall(&mut rng, m, 1.0))
+            };
+            let (p, q): (Vec<DVec2>, Vec<DVec2>) = (
+                p.into_iter().map(|v| v + DVec2::new(0.0, -0.5)).collect(),
+                q.into_iter().map(|v| v + DVec2::new(0.0, 0.5)).collect(),
+            );
+            let mut p = p;
+            p.dedup();
+            let (kp, kq, lens) = keys(&p, &q, a, b).expect("finite keys");
+            let (kx, ky) = (Keys { t: &kp.0, d: &kp.1 }, Keys { t: &kq.0, d: &kq.1 });
+            // Log-uniform, from 1 to twice the pairs.
+            let top = (2 * (p.len() + 1) * (q.len() + 1)) as f64;
+            let budget = top.powf(rng.unit_f64()) as usize;
+            let got =
+                scan_windowed::<Robust, [DVec2]>(&p, &q, kx, ky, &lens, f64::INFINITY, budget);
+            let Ok((w, _)) = got else {
+                declined += 1;
+                continue;
+            };
+            answered += 1;
+            let want = scan::<Robust>(&p, &q, false);
+            let dist = |(f, g): (Feature, Feature)| match (f, g) {
+                (Feature::Vertex(i), Feature::Vertex(j)) => Dist2::PointPoint(p[i], q[j]),
+                (Feature::Vertex(i), Feature::Edge(j)) => Dist2::PointSegment(p[i], q[j], q[j + 1]),
+                (Feature::Edge(i), Feature::Vertex(j)) => Dist2::PointSegment(q[j], p[i], p[i + 1]),
+                (Feature::Edge(_), Feature::Edge(_)) => panic!("no vertex in {f:?}, {g:?}"),
+            };
+            assert_eq!(
+                Robust::cmp_dist2(dist(w.features()), dist((want.feature_p, want.feature_q))),
+                Ordering::Equal,
+                "round {round}: budget {budget}"
+            );
+        }
+        assert!(
+            answered > 100 && declined > 50,
+            "{answered} answered, {declined} declined"
+        );
     }
 }
