@@ -1595,6 +1595,26 @@ impl<'a, C: Points + ?Sized> Boxes<'a, C> {
         }
     }
 
+    /// The boxes of the blocks `GROUP` times as large, from these: block `b`'s holds its children
+    /// `b·GROUP .. (b + 1)·GROUP`, which hold the same vertices (each block's last vertex is the
+    /// next one's first). `O(1)` a block.
+    fn merged(&self) -> Self {
+        let count = self.t.len().div_ceil(GROUP);
+        let join = |a: (f64, f64), b: &(f64, f64)| (a.0.min(b.0), a.1.max(b.1));
+        let union = |v: &[(f64, f64)], b: usize| {
+            let kids = &v[b * GROUP..((b + 1) * GROUP).min(v.len())];
+            kids[1..].iter().fold(kids[0], join)
+        };
+        Boxes {
+            c: self.c,
+            size: self.size * GROUP,
+            t: (0..count).map(|b| union(&self.t, b)).collect(),
+            d: (0..count).map(|b| union(&self.d, b)).collect(),
+            chords: (0..count).map(|_| OnceCell::new()).collect(),
+            tests: Cell::new(0),
+        }
+    }
+
     /// Block `k`'s box in its chord's frame: its vertices, and the ends of its edges unless the
     /// vertices are those ends.
     fn chord(&self, k: usize) -> Option<Chord> {
@@ -1625,21 +1645,30 @@ impl<'a, C: Points + ?Sized> Boxes<'a, C> {
 }
 
 /// A chain's fine blocks ([`BLOCK`] vertices), coarse blocks ([`GROUP`] fine ones) and wide blocks
-/// (`GROUP` coarse ones).
+/// (`GROUP` coarse ones), and on long chains blocks `GROUP` times as large again, level after
+/// level, until a level has at most [`WIDE`] blocks.
 struct Blocks<'a, C: ?Sized> {
     fine: Boxes<'a, C>,
     coarse: Boxes<'a, C>,
     wide: Boxes<'a, C>,
+    /// The levels above the wide blocks, from the lowest.
+    above: Vec<Boxes<'a, C>>,
     /// The coarse blocks not left out, when some are ([`Live`]).
     live: Option<Live>,
 }
 
 impl<'a, C: Points + ?Sized> Blocks<'a, C> {
     fn of(c: &'a C, k: Keys<'_>) -> Self {
+        let wide = Boxes::of(c, k, BLOCK * GROUP * GROUP);
+        let mut above: Vec<Boxes<'a, C>> = Vec::new();
+        while above.last().unwrap_or(&wide).t.len() > WIDE {
+            above.push(above.last().unwrap_or(&wide).merged());
+        }
         Blocks {
             fine: Boxes::of(c, k, BLOCK),
             coarse: Boxes::of(c, k, BLOCK * GROUP),
-            wide: Boxes::of(c, k, BLOCK * GROUP * GROUP),
+            wide,
+            above,
             live: None,
         }
     }
@@ -1651,7 +1680,8 @@ impl<'a, C: Points + ?Sized> Blocks<'a, C> {
 
     /// The box tests made so far, at every level.
     fn tests(&self) -> usize {
-        self.fine.tests.get() + self.coarse.tests.get() + self.wide.tests.get()
+        let above: usize = self.above.iter().map(|b| b.tests.get()).sum();
+        self.fine.tests.get() + self.coarse.tests.get() + self.wide.tests.get() + above
     }
 
     /// The coarse blocks of `r` not left out, in order: `O(1)` each, and `O(1)` for none.
@@ -1672,8 +1702,11 @@ impl<'a, C: Points + ?Sized> Blocks<'a, C> {
     /// farther than `√u2` from every vertex of the team: from its centre `v` with keys `x`, every
     /// member lies within a reach that `u2` already adds (so a block farther than `√u2` from `v`
     /// is ruled out for all of them). Wide blocks are tested first when the span holds more than
-    /// [`WIDE`] coarse ones; a coarse block with at most two fine blocks in the span is kept
-    /// untested. At most one box test per coarse block of the span, and one per wide block.
+    /// [`WIDE`] coarse ones, and the blocks of the level above first when it holds more than
+    /// `WIDE` wide ones, and so on up ([`Blocks::descend`]); a coarse block with at most two fine
+    /// blocks in the span is kept untested. At most one box test per block of each level met:
+    /// where the boxes rule out all but the blocks near a few places of the chain, `O(log n)`
+    /// tests a place.
     fn near(
         &self,
         span: &Span,
@@ -1695,16 +1728,43 @@ impl<'a, C: Points + ?Sized> Blocks<'a, C> {
             self.live(coarse).for_each(in_coarse);
             return;
         }
-        // The wide blocks holding a coarse block not left out.
+        // The level to start from (0: the wide blocks, `l`: `above[l − 1]`): the lowest whose
+        // blocks in the span are at most `WIDE`, or the top.
+        let mut level = 0;
+        while level < self.above.len() && coarse.len() > WIDE * GROUP.pow(level as u32 + 1) {
+            level += 1;
+        }
+        self.descend(level, &coarse, (v, x), lens, u2, &mut in_coarse);
+    }
+
+    /// [`Blocks::near`] at `level` (0: the wide blocks, `l`: `above[l − 1]`), over the coarse
+    /// blocks `coarse`: each block of the level holding a coarse block of `coarse` not left out is
+    /// tested (a wide block only when it holds more than two of them), and the blocks below it
+    /// taken in turn unless it is certainly farther than `√u2`.
+    fn descend(
+        &self,
+        level: usize,
+        coarse: &Range<usize>,
+        (v, x): (DVec2, (f64, f64)),
+        lens: &Lens,
+        u2: f64,
+        in_coarse: &mut impl FnMut(usize),
+    ) {
+        // Coarse blocks a block of the level.
+        let per = GROUP.pow(level as u32 + 1);
         let mut from = coarse.start;
         while let Some(c) = self.live(from..coarse.end).next() {
-            let w = c / GROUP;
-            let within = (w * GROUP).max(coarse.start)..((w + 1) * GROUP).min(coarse.end);
+            let b = c / per;
+            let within = (b * per).max(coarse.start)..((b + 1) * per).min(coarse.end);
             from = within.end;
-            if within.len() > 2 && self.wide.beyond(w, v, x, lens, u2) {
-                continue;
+            if level == 0 {
+                if within.len() > 2 && self.wide.beyond(b, v, x, lens, u2) {
+                    continue;
+                }
+                self.live(within).for_each(&mut *in_coarse);
+            } else if !self.above[level - 1].beyond(b, v, x, lens, u2) {
+                self.descend(level - 1, &within, (v, x), lens, u2, in_coarse);
             }
-            self.live(within).for_each(&mut in_coarse);
         }
     }
 
@@ -2244,6 +2304,62 @@ mod tests {
             ruled * 2 > tested && backed > 0,
             "{ruled} of {tested}, {backed}"
         );
+    }
+
+    /// The levels above the wide blocks (an arc of 65,536 vertices: 128 wide blocks, 16 above
+    /// them): from a vertex under the arc's end, whose window holds the whole arc, every coarse
+    /// block left out of `near` is certainly farther than `√u2` (checked exactly near the
+    /// threshold), the block holding the arc's end is kept, and the box tests are a few a level;
+    /// from a vertex under the middle, farther than `√u2` from the whole arc, every block is left
+    /// out by the sixteen boxes of the top level alone.
+    #[test]
+    fn levels_above_the_wide_blocks_rule_out_only_blocks_beyond() {
+        use crate::monotone::keys;
+        use polydist_predicates::exact::squared_distance_point_segment;
+        let m = 65_536;
+        let arc: Vec<DVec2> = (0..m)
+            .map(|j| {
+                let a = (120.0 - 60.0 * j as f64 / (m - 1) as f64).to_radians();
+                DVec2::new(a.cos(), a.sin())
+            })
+            .collect();
+        let (end, middle) = (DVec2::new(0.3, 0.0), DVec2::new(0.0, 0.0));
+        let (a, b) = (DVec2::new(0.0, 0.5), DVec2::new(1.0, 0.5));
+        let (kp, kq, lens) = keys(&[end, middle], &arc, a, b).expect("finite keys");
+        let ky = Keys { t: &kq.0, d: &kq.1 };
+        let by = Blocks::of(arc.as_slice(), ky);
+        assert_eq!(
+            (by.wide.t.len(), by.above.len(), by.above[0].t.len()),
+            (128, 1, 16)
+        );
+        let span = Span::of((0, m), m);
+        let covered = span.blocks(BLOCK * GROUP);
+        // Just above the clearance from the end vertex to the arc's end.
+        let u2 = end.distance_squared(arc[m - 1]) * (1.0 + 1e-9);
+        let mut near = Vec::new();
+        for (i, v) in [end, middle].into_iter().enumerate() {
+            let before = by.tests();
+            by.near(&span, (v, (kp.0[i], kp.1[i])), &lens, u2, &mut near);
+            let tests = by.tests() - before;
+            if i == 1 {
+                assert!(near.is_empty() && tests == 16, "{near:?}, {tests} tests");
+                continue;
+            }
+            assert!(near.contains(&(covered.end - 1)), "{near:?}");
+            assert!(near.len() <= 4 && tests <= 64, "{near:?}, {tests} tests");
+            for c in covered.clone().filter(|c| !near.contains(c)) {
+                let edges = c * BLOCK * GROUP..((c + 1) * BLOCK * GROUP).min(m - 1);
+                for e in edges {
+                    let (s, t) = (arc[e], arc[e + 1]);
+                    let h = ((v - s).dot(t - s) / (t - s).length_squared()).clamp(0.0, 1.0);
+                    if (v - (s + (t - s) * h)).length_squared() > 1.01 * u2 {
+                        continue;
+                    }
+                    let d = squared_distance_point_segment(v, s, t).expect("finite");
+                    assert!(d > to_rational(u2).expect("finite"), "block {c}, edge {e}");
+                }
+            }
+        }
     }
 
     /// `Near::box_gap2` never exceeds the exact squared distance from a point of the box to the
