@@ -327,6 +327,18 @@ impl Winner {
     }
 }
 
+/// The squared distance of a scan's winner, given as chain-local features (a vertex of `p` or
+/// `q`, and a vertex or edge of the other), for the tests to compare exactly.
+#[cfg(test)]
+pub(crate) fn feature_dist(p: &[DVec2], q: &[DVec2], (f, g): (Feature, Feature)) -> Dist2 {
+    match (f, g) {
+        (Feature::Vertex(i), Feature::Vertex(j)) => Dist2::PointPoint(p[i], q[j]),
+        (Feature::Vertex(i), Feature::Edge(j)) => Dist2::PointSegment(p[i], q[j], q[j + 1]),
+        (Feature::Edge(i), Feature::Vertex(j)) => Dist2::PointSegment(q[j], p[i], p[i + 1]),
+        (Feature::Edge(_), Feature::Edge(_)) => panic!("a scan's winner has a vertex"),
+    }
+}
+
 /// The bounds of `c` ([`Cand::scan_bounds`]) unless a scan skips it: with `interior_only`, when its
 /// lower bound is strictly above `u2` (the best's upper bound or the cut, whichever is smaller), or
 /// when it is a vertex–edge pair whose vertex does not project strictly inside the edge (a vertex
@@ -2780,20 +2792,11 @@ mod tests {
             scan_windowed::<Robust, [DVec2]>(zig, arc, kx, ky, lens, f64::INFINITY, budget)
         };
         let (w, tried) = scan(&zig, &arc, kx, ky, &lens, budget).expect("within the budget");
-        let dist = |(f, g): (Feature, Feature)| match (f, g) {
-            (Feature::Vertex(i), Feature::Vertex(j)) => Dist2::PointPoint(zig[i], arc[j]),
-            (Feature::Vertex(i), Feature::Edge(j)) => {
-                Dist2::PointSegment(zig[i], arc[j], arc[j + 1])
-            }
-            (Feature::Edge(i), Feature::Vertex(j)) => {
-                Dist2::PointSegment(arc[j], zig[i], zig[i + 1])
-            }
-            (Feature::Edge(_), Feature::Edge(_)) => panic!("no vertex in {f:?}, {g:?}"),
-        };
+        let dist = |f: (Feature, Feature)| feature_dist(&zig, &arc, f);
         let want = dist((s3.pair.feature_p, s3.pair.feature_q));
         assert_eq!(Robust::cmp_dist2(dist(w.features()), want), Ordering::Equal);
         assert!(tried <= budget, "{tried}");
-        // Room for the candidates but not the box tests (some 18,000 here): declined, the tests
+        // Room for the candidates but not the box tests (some 8,500 here): declined, the tests
         // counted.
         let low = tried + 4_000;
         let work = scan(&zig, &arc, kx, ky, &lens, low).expect_err("beyond the budget");
@@ -2878,12 +2881,7 @@ mod tests {
             };
             answered += 1;
             let want = scan::<Robust>(&p, &q, false);
-            let dist = |(f, g): (Feature, Feature)| match (f, g) {
-                (Feature::Vertex(i), Feature::Vertex(j)) => Dist2::PointPoint(p[i], q[j]),
-                (Feature::Vertex(i), Feature::Edge(j)) => Dist2::PointSegment(p[i], q[j], q[j + 1]),
-                (Feature::Edge(i), Feature::Vertex(j)) => Dist2::PointSegment(q[j], p[i], p[i + 1]),
-                (Feature::Edge(_), Feature::Edge(_)) => panic!("no vertex in {f:?}, {g:?}"),
-            };
+            let dist = |f: (Feature, Feature)| feature_dist(&p, &q, f);
             assert_eq!(
                 Robust::cmp_dist2(dist(w.features()), dist((want.feature_p, want.feature_q))),
                 Ordering::Equal,

@@ -586,6 +586,7 @@ fn internal(f: Feature, chain: &[usize], n: usize) -> Feature {
 mod tests {
     //! The keys' error bound and the window against exact rationals.
     use super::*;
+    use crate::brute::feature_dist;
     use polydist_oracle::SplitMix64;
     use polydist_predicates::exact::to_rational;
 
@@ -652,17 +653,6 @@ mod tests {
         (a, d, DVec2::new(-d.y, d.x))
     }
 
-    /// The exact distance of a scan winner's features of the chains `p` and `q`.
-    fn winner_dist(p: &[DVec2], q: &[DVec2], f: (Feature, Feature)) -> polydist_predicates::Dist2 {
-        use polydist_predicates::Dist2;
-        match f {
-            (Feature::Vertex(i), Feature::Vertex(j)) => Dist2::PointPoint(p[i], q[j]),
-            (Feature::Vertex(i), Feature::Edge(j)) => Dist2::PointSegment(p[i], q[j], q[j + 1]),
-            (Feature::Edge(i), Feature::Vertex(j)) => Dist2::PointSegment(q[j], p[i], p[i + 1]),
-            _ => unreachable!("a scan's winner has a vertex"),
-        }
-    }
-
     /// `sweep_chains` against the exact scan on random chains monotone along a random lattice
     /// direction (either way, vertical steps and ties included, the chains free to overlap and
     /// cross), with and without a cut: the scan's nearest pair exactly when it beats the cut, a
@@ -711,7 +701,7 @@ mod tests {
                 continue;
             };
             swept += 1;
-            let dist = |f: (Feature, Feature)| winner_dist(&p, &q, f);
+            let dist = |f: (Feature, Feature)| feature_dist(&p, &q, f);
             let got = dist(w.features());
             let scan = dist(
                 scan_winner_below::<Exact>(&p, &q, f64::INFINITY)
@@ -819,7 +809,7 @@ mod tests {
             };
             let w = w.reversed(rp.then_some(p.len()), rq.then_some(q.len()));
             swept += 1;
-            let dist = |f: (Feature, Feature)| winner_dist(&p, &q, f);
+            let dist = |f: (Feature, Feature)| feature_dist(&p, &q, f);
             let scan = scan_winner_below::<Exact>(&p, &q, f64::INFINITY).0;
             let (got, want) = (dist(w.features()), dist(scan.features()));
             assert_eq!(
@@ -894,8 +884,8 @@ mod tests {
             let w = w.reversed(Some(np), Some(nq));
             let scan = scan_winner_below::<Robust>(&p, &q, f64::INFINITY).0;
             let (got, want) = (
-                winner_dist(&p, &q, w.features()),
-                winner_dist(&p, &q, scan.features()),
+                feature_dist(&p, &q, w.features()),
+                feature_dist(&p, &q, scan.features()),
             );
             assert_eq!(
                 Robust::cmp_dist2(got, want),
@@ -970,8 +960,8 @@ mod tests {
             )
             .expect("chains across the line");
             let (got, want) = (
-                winner_dist(&p, &q, w.features()),
-                winner_dist(&p, &q, (s3.pair.feature_p, s3.pair.feature_q)),
+                feature_dist(&p, &q, w.features()),
+                feature_dist(&p, &q, (s3.pair.feature_p, s3.pair.feature_q)),
             );
             assert_eq!(
                 Robust::cmp_dist2(got, want),
